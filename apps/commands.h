@@ -1,0 +1,13 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+// Each sub-command of the `segslam` CLI registers itself on the top-level app. The command files
+// only parse options and call into the library.
+namespace segslam::apps {
+
+void registerRunCommand(CLI::App& app);
+void registerEvalCommand(CLI::App& app);
+void registerSynthCommand(CLI::App& app);
+
+}  // namespace segslam::apps

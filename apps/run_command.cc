@@ -1,0 +1,9 @@
+#include "commands.h"
+
+namespace segslam::apps {
+
+void registerRunCommand(CLI::App& app) {
+  app.add_subcommand("run", "placeholder, being written");
+}
+
+}  // namespace segslam::apps

@@ -1,0 +1,183 @@
+#include "segslam/io/camera_config.h"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <regex>
+
+#include "segslam/util/error.h"
+
+namespace segslam::io {
+
+namespace {
+
+core::Camera makeTumCamera(const std::string& name, double fx, double fy, double cx, double cy,
+                           std::array<double, 5> distortion, double depth_factor) {
+  core::Camera camera;
+  camera.name = name;
+  camera.width = 640;
+  camera.height = 480;
+  camera.fx = fx;
+  camera.fy = fy;
+  camera.cx = cx;
+  camera.cy = cy;
+  camera.distortion = distortion;
+  camera.depth_factor = depth_factor;
+  camera.fps = 30.0;
+  return camera;
+}
+
+int lineOf(const YAML::Node& node) { return node.Mark().line + 1; }
+
+template <typename T>
+T readScalar(const YAML::Node& node, const std::string& key, const std::filesystem::path& file) {
+  try {
+    return node.as<T>();
+  } catch (const YAML::Exception&) {
+    util::failAt(file, lineOf(node),
+                 fmt::format("camera.{} has the wrong type: '{}'", key,
+                             node.IsScalar() ? node.Scalar() : std::string("<not a scalar>")));
+  }
+}
+
+template <typename T>
+void readOptional(const YAML::Node& camera_node, const std::string& key,
+                  const std::filesystem::path& file, T& value) {
+  const YAML::Node node = camera_node[key];
+  if (node) value = readScalar<T>(node, key, file);
+}
+
+std::array<double, 5> readDistortion(const YAML::Node& node, const std::filesystem::path& file) {
+  if (!node.IsSequence() || node.size() != 5) {
+    util::failAt(file, lineOf(node), "camera.distortion must be a list of 5 numbers [k1, k2, p1, p2, k3]");
+  }
+  std::array<double, 5> d{};
+  for (std::size_t i = 0; i < 5; ++i) d[i] = readScalar<double>(node[i], "distortion", file);
+  return d;
+}
+
+YAML::Node loadYaml(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) util::failAt(file, std::filesystem::exists(file) ? "cannot be read" : "file not found");
+  try {
+    return YAML::Load(in);
+  } catch (const YAML::ParserException& e) {
+    util::failAt(file, e.mark.line + 1, fmt::format("malformed YAML: {}", e.msg));
+  }
+}
+
+core::Camera startingCamera(const YAML::Node& camera_node, const std::filesystem::path& file) {
+  const YAML::Node preset_node = camera_node["preset"];
+  if (!preset_node) return core::Camera{};
+  const auto preset_name = readScalar<std::string>(preset_node, "preset", file);
+  auto preset = cameraPreset(preset_name);
+  if (!preset) {
+    util::failAt(file, lineOf(preset_node),
+                 fmt::format("unknown camera preset '{}' (known: {})", preset_name,
+                             fmt::join(cameraPresetNames(), ", ")));
+  }
+  return *preset;
+}
+
+void requireIntrinsics(const YAML::Node& camera_node, const std::filesystem::path& file) {
+  if (camera_node["preset"]) return;
+  for (const char* key : {"width", "height", "fx", "fy", "cx", "cy", "depth_factor"}) {
+    if (!camera_node[key]) {
+      util::failAt(file, lineOf(camera_node),
+                   fmt::format("camera.{} is missing (or give camera.preset)", key));
+    }
+  }
+}
+
+}  // namespace
+
+std::optional<core::Camera> cameraPreset(const std::string& name) {
+  if (name == "freiburg1") {
+    return makeTumCamera(name, 517.306408, 516.469215, 318.643040, 255.313989,
+                         {0.262383, -0.953104, -0.005358, 0.002628, 1.163314}, 5000.0);
+  }
+  if (name == "freiburg2") {
+    return makeTumCamera(name, 520.908620, 521.007327, 325.141442, 249.701764,
+                         {0.231222, -0.784899, -0.003257, -0.000105, 0.917205}, 5208.0);
+  }
+  if (name == "freiburg3") {
+    return makeTumCamera(name, 535.4, 539.2, 320.1, 247.6, {0.0, 0.0, 0.0, 0.0, 0.0}, 5000.0);
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> cameraPresetNames() { return {"freiburg1", "freiburg2", "freiburg3"}; }
+
+std::optional<std::string> presetNameForDataset(const std::filesystem::path& dataset_folder) {
+  std::string name = std::filesystem::weakly_canonical(dataset_folder).filename().string();
+  if (name.empty()) name = dataset_folder.filename().string();
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  static const std::regex kPattern(R"((?:^|[^a-z0-9])(?:freiburg|fr)([123])(?:[^0-9]|$))");
+  std::smatch match;
+  if (std::regex_search(name, match, kPattern)) return "freiburg" + match[1].str();
+  return std::nullopt;
+}
+
+core::Camera readCameraYaml(const std::filesystem::path& file) {
+  const YAML::Node root = loadYaml(file);
+  if (!root.IsMap() || !root["camera"] || !root["camera"].IsMap()) {
+    util::failAt(file, root ? lineOf(root) : 0, "expected a top-level 'camera:' mapping");
+  }
+  const YAML::Node node = root["camera"];
+  core::Camera camera = startingCamera(node, file);
+  requireIntrinsics(node, file);
+  readOptional(node, "name", file, camera.name);
+  readOptional(node, "width", file, camera.width);
+  readOptional(node, "height", file, camera.height);
+  readOptional(node, "fx", file, camera.fx);
+  readOptional(node, "fy", file, camera.fy);
+  readOptional(node, "cx", file, camera.cx);
+  readOptional(node, "cy", file, camera.cy);
+  readOptional(node, "depth_factor", file, camera.depth_factor);
+  readOptional(node, "fps", file, camera.fps);
+  if (node["distortion"]) camera.distortion = readDistortion(node["distortion"], file);
+  validateCamera(camera, file);
+  return camera;
+}
+
+void writeCameraYaml(const std::filesystem::path& file, const core::Camera& camera) {
+  YAML::Emitter out;
+  out << YAML::BeginMap << YAML::Key << "camera" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "name" << YAML::Value << camera.name;
+  out << YAML::Key << "width" << YAML::Value << camera.width;
+  out << YAML::Key << "height" << YAML::Value << camera.height;
+  out << YAML::Key << "fx" << YAML::Value << camera.fx;
+  out << YAML::Key << "fy" << YAML::Value << camera.fy;
+  out << YAML::Key << "cx" << YAML::Value << camera.cx;
+  out << YAML::Key << "cy" << YAML::Value << camera.cy;
+  out << YAML::Key << "distortion" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+  for (double d : camera.distortion) out << d;
+  out << YAML::EndSeq;
+  out << YAML::Key << "depth_factor" << YAML::Value << camera.depth_factor;
+  out << YAML::Key << "fps" << YAML::Value << camera.fps;
+  out << YAML::EndMap << YAML::EndMap;
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  std::ofstream stream(file);
+  stream << "# segslam camera settings (pinhole + k1 k2 p1 p2 k3; metres = depth / depth_factor)\n"
+         << out.c_str() << "\n";
+  if (!stream) util::failAt(file, "cannot write");
+}
+
+void validateCamera(const core::Camera& camera, const std::filesystem::path& source) {
+  auto fail = [&](const std::string& what) { util::failAt(source, "camera." + what); };
+  if (camera.width <= 0 || camera.height <= 0) fail("width and height must be positive");
+  if (!(camera.fx > 0.0) || !(camera.fy > 0.0)) fail("fx and fy must be positive");
+  if (!std::isfinite(camera.cx) || !std::isfinite(camera.cy)) fail("cx and cy must be finite");
+  if (!(camera.depth_factor > 0.0)) fail("depth_factor must be positive");
+  if (!(camera.fps > 0.0)) fail("fps must be positive");
+  for (double d : camera.distortion) {
+    if (!std::isfinite(d)) fail("distortion must be finite");
+  }
+}
+
+}  // namespace segslam::io

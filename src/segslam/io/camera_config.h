@@ -1,0 +1,39 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "segslam/core/camera.h"
+
+namespace segslam::io {
+
+// Built-in camera presets of the TUM RGB-D benchmark: "freiburg1", "freiburg2", "freiburg3".
+std::optional<core::Camera> cameraPreset(const std::string& name);
+std::vector<std::string> cameraPresetNames();
+
+// Guesses the TUM preset from a dataset folder name ("rgbd_dataset_freiburg2_desk",
+// "tum_fr1_xyz_300", ...). Returns nothing when the name does not say.
+std::optional<std::string> presetNameForDataset(const std::filesystem::path& dataset_folder);
+
+// Reads camera settings from YAML:
+//   camera:
+//     preset: freiburg1        # optional: start from a preset, then override any key below
+//     name: my_camera
+//     width: 640
+//     height: 480
+//     fx: 517.3  fy: 516.5  cx: 318.6  cy: 255.3
+//     distortion: [k1, k2, p1, p2, k3]   # optional, default zeros
+//     depth_factor: 5000                 # raw depth units per metre
+//     fps: 30
+// Throws util::Error naming the file (and line) on malformed YAML, missing keys, wrong types or
+// impossible values.
+core::Camera readCameraYaml(const std::filesystem::path& file);
+
+void writeCameraYaml(const std::filesystem::path& file, const core::Camera& camera);
+
+// Throws util::Error (prefixed with `source`) when a value is impossible.
+void validateCamera(const core::Camera& camera, const std::filesystem::path& source);
+
+}  // namespace segslam::io

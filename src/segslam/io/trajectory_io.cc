@@ -1,0 +1,72 @@
+#include "segslam/io/trajectory_io.h"
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+
+#include "segslam/util/error.h"
+#include "segslam/util/text_file.h"
+
+namespace segslam::io {
+
+namespace {
+
+constexpr const char* kTumFormat = "timestamp tx ty tz qx qy qz qw";
+
+core::StampedPose parsePoseRow(const util::TextRow& row, const std::filesystem::path& file) {
+  util::requireFields(row, 8, file, kTumFormat);
+  if (row.fields.size() > 8) {
+    util::failAt(file, row.line, fmt::format("expected '{}' but found {} fields", kTumFormat,
+                                             row.fields.size()));
+  }
+  static constexpr const char* kNames[] = {"timestamp", "tx", "ty", "tz", "qx", "qy", "qz", "qw"};
+  double v[8];
+  for (int i = 0; i < 8; ++i) v[i] = util::parseDouble(row.fields[i], file, row.line, kNames[i]);
+  const Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
+  if (q.norm() < 1e-9) util::failAt(file, row.line, "quaternion is zero");
+  return {v[0], geometry::poseFromTranslationQuaternion({v[1], v[2], v[3]}, q)};
+}
+
+}  // namespace
+
+core::Trajectory readTumTrajectory(const std::filesystem::path& file) {
+  const auto rows = util::readTextRows(file);
+  if (rows.empty()) util::failAt(file, "trajectory file has no poses");
+  std::vector<core::StampedPose> poses;
+  poses.reserve(rows.size());
+  for (const auto& row : rows) {
+    auto pose = parsePoseRow(row, file);
+    if (!poses.empty()) {
+      const double previous = poses.back().timestamp;
+      if (pose.timestamp == previous) {
+        util::failAt(file, row.line, fmt::format("duplicated timestamp {:.6f}", pose.timestamp));
+      }
+      if (pose.timestamp < previous) {
+        util::failAt(file, row.line,
+                     fmt::format("timestamp {:.6f} is out of order (previous {:.6f})",
+                                 pose.timestamp, previous));
+      }
+    }
+    poses.push_back(pose);
+  }
+  return core::Trajectory(std::move(poses));
+}
+
+void writeTumTrajectory(const std::filesystem::path& file, const core::Trajectory& trajectory,
+                        const std::string& header_comment) {
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  try {
+    auto out = fmt::output_file(file.string());
+    if (!header_comment.empty()) out.print("# {}\n", header_comment);
+    out.print("# {}\n", kTumFormat);
+    for (const auto& p : trajectory.poses()) {
+      const Eigen::Vector3d t = p.T_wc.translation();
+      const Eigen::Quaterniond q(p.T_wc.linear());
+      out.print("{:.6f} {:.9f} {:.9f} {:.9f} {:.9f} {:.9f} {:.9f} {:.9f}\n", p.timestamp, t.x(),
+                t.y(), t.z(), q.x(), q.y(), q.z(), q.w());
+    }
+  } catch (const std::system_error& e) {
+    util::failAt(file, fmt::format("cannot write: {}", e.what()));
+  }
+}
+
+}  // namespace segslam::io
