@@ -1,0 +1,73 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "segslam/core/camera.h"
+#include "segslam/core/trajectory.h"
+
+namespace segslam::io {
+
+struct DatasetOptions {
+  // Maximum |t_rgb - t_depth| (seconds) when associating colour and depth, as the TUM tools.
+  double max_time_difference = 0.02;
+  // Camera settings, in order of precedence: an explicit YAML file, an explicit preset name,
+  // `camera.yaml` inside the dataset folder, the TUM preset named by the folder ("fr1", ...).
+  std::optional<std::filesystem::path> camera_file;
+  std::optional<std::string> camera_preset;
+};
+
+// One associated RGB-D frame of the sequence (paths are resolved against the dataset folder).
+struct FrameRecord {
+  double timestamp = 0.0;  // colour image timestamp: the frame's timestamp
+  std::filesystem::path rgb_path;
+  double depth_timestamp = 0.0;
+  std::filesystem::path depth_path;
+  std::optional<std::filesystem::path> mask_path;    // from mask.txt
+  std::optional<std::filesystem::path> labels_path;  // from labels.txt (semantic class ids)
+  std::optional<std::filesystem::path> instances_path;  // from instances.txt (instance ids)
+};
+
+// Images of one frame, validated against the camera settings.
+struct RgbdFrame {
+  double timestamp = 0.0;
+  cv::Mat rgb;        // CV_8UC3, BGR
+  cv::Mat depth;      // CV_32FC1, metres, 0 = no measurement
+  cv::Mat mask;       // CV_8UC1, 255 = dynamic, 0 = static; empty when the dataset has no masks
+  cv::Mat labels;     // CV_8UC1 core::SemanticClass ids; empty when absent
+  cv::Mat instances;  // CV_16UC1 instance ids, 0 = none; empty when absent
+};
+
+// A sequence in the TUM RGB-D layout: rgb.txt, depth.txt (or associations.txt), optional
+// groundtruth.txt, mask.txt, labels.txt, instances.txt and camera.yaml. Opening parses and
+// validates every list file; any problem throws util::Error naming the file and line.
+class TumDataset {
+ public:
+  static TumDataset open(const std::filesystem::path& folder, const DatasetOptions& options = {});
+
+  [[nodiscard]] const std::filesystem::path& folder() const { return folder_; }
+  [[nodiscard]] const core::Camera& camera() const { return camera_; }
+  // Human-readable origin of the camera settings, e.g. "preset freiburg1 (from folder name)".
+  [[nodiscard]] const std::string& cameraSource() const { return camera_source_; }
+  [[nodiscard]] const std::vector<FrameRecord>& frames() const { return frames_; }
+  [[nodiscard]] std::size_t size() const { return frames_.size(); }
+  [[nodiscard]] const std::optional<core::Trajectory>& groundTruth() const { return ground_truth_; }
+  [[nodiscard]] bool hasMasks() const;
+
+  // Loads and validates the images of frame i: unreadable files, wrong image types and sizes
+  // throw util::Error naming the image file.
+  [[nodiscard]] RgbdFrame loadFrame(std::size_t i) const;
+
+ private:
+  std::filesystem::path folder_;
+  core::Camera camera_;
+  std::string camera_source_;
+  std::vector<FrameRecord> frames_;
+  std::optional<core::Trajectory> ground_truth_;
+};
+
+}  // namespace segslam::io
