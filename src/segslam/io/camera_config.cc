@@ -4,12 +4,16 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <regex>
+#include <string_view>
+#include <system_error>
 
 #include "segslam/util/error.h"
+#include "segslam/util/text_file.h"
 
 namespace segslam::io {
 
@@ -53,34 +57,48 @@ void readOptional(const YAML::Node& camera_node, const std::string& key,
 
 std::array<double, 5> readDistortion(const YAML::Node& node, const std::filesystem::path& file) {
   if (!node.IsSequence() || node.size() != 5) {
-    util::failAt(file, lineOf(node), "camera.distortion must be a list of 5 numbers [k1, k2, p1, p2, k3]");
+    util::failAt(file, lineOf(node),
+                 "camera.distortion must be a list of 5 numbers [k1, k2, p1, p2, k3]");
   }
   std::array<double, 5> d{};
   for (std::size_t i = 0; i < 5; ++i) d[i] = readScalar<double>(node[i], "distortion", file);
   return d;
 }
 
-YAML::Node loadYaml(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) util::failAt(file, std::filesystem::exists(file) ? "cannot be read" : "file not found");
+YAML::Node loadYaml(std::string_view text, const std::filesystem::path& file) {
   try {
-    return YAML::Load(in);
-  } catch (const YAML::ParserException& e) {
+    return YAML::Load(std::string(text));
+  } catch (const YAML::Exception& e) {
     util::failAt(file, e.mark.line + 1, fmt::format("malformed YAML: {}", e.msg));
+  }
+}
+
+// A misspelt key would otherwise be ignored silently, leaving a preset or default value in place.
+void rejectUnknownKeys(const YAML::Node& camera_node, const std::filesystem::path& file) {
+  static constexpr std::array<std::string_view, 11> kKeys = {
+      "preset", "name", "width",      "height",       "fx", "fy",
+      "cx",     "cy",   "distortion", "depth_factor", "fps"};
+  for (const auto& entry : camera_node) {
+    const YAML::Node& key = entry.first;
+    const bool known =
+        key.IsScalar() && std::find(kKeys.begin(), kKeys.end(), key.Scalar()) != kKeys.end();
+    if (!known) {
+      util::failAt(file, lineOf(key),
+                   fmt::format("camera.{} is not a known key (known: {})",
+                               key.IsScalar() ? key.Scalar() : std::string("<not a scalar>"),
+                               fmt::join(kKeys, ", ")));
+    }
   }
 }
 
 core::Camera startingCamera(const YAML::Node& camera_node, const std::filesystem::path& file) {
   const YAML::Node preset_node = camera_node["preset"];
   if (!preset_node) return core::Camera{};
-  const auto preset_name = readScalar<std::string>(preset_node, "preset", file);
-  auto preset = cameraPreset(preset_name);
-  if (!preset) {
-    util::failAt(file, lineOf(preset_node),
-                 fmt::format("unknown camera preset '{}' (known: {})", preset_name,
-                             fmt::join(cameraPresetNames(), ", ")));
+  try {
+    return requireCameraPreset(readScalar<std::string>(preset_node, "preset", file));
+  } catch (const util::Error& e) {
+    util::failAt(file, lineOf(preset_node), e.what());
   }
-  return *preset;
 }
 
 void requireIntrinsics(const YAML::Node& camera_node, const std::filesystem::path& file) {
@@ -112,9 +130,22 @@ std::optional<core::Camera> cameraPreset(const std::string& name) {
 
 std::vector<std::string> cameraPresetNames() { return {"freiburg1", "freiburg2", "freiburg3"}; }
 
+core::Camera requireCameraPreset(const std::string& name) {
+  auto preset = cameraPreset(name);
+  if (!preset) {
+    throw util::Error(fmt::format("unknown camera preset '{}' (known: {})", name,
+                                  fmt::join(cameraPresetNames(), ", ")));
+  }
+  return *preset;
+}
+
 std::optional<std::string> presetNameForDataset(const std::filesystem::path& dataset_folder) {
-  std::string name = std::filesystem::weakly_canonical(dataset_folder).filename().string();
-  if (name.empty()) name = dataset_folder.filename().string();
+  // The folder's own name, also for "." or a path ending in '/'.
+  std::error_code ec;
+  std::filesystem::path folder = std::filesystem::weakly_canonical(dataset_folder, ec);
+  if (ec) folder = dataset_folder.lexically_normal();
+  if (!folder.has_filename()) folder = folder.parent_path();
+  std::string name = folder.filename().string();
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   static const std::regex kPattern(R"((?:^|[^a-z0-9])(?:freiburg|fr)([123])(?:[^0-9]|$))");
@@ -124,11 +155,16 @@ std::optional<std::string> presetNameForDataset(const std::filesystem::path& dat
 }
 
 core::Camera readCameraYaml(const std::filesystem::path& file) {
-  const YAML::Node root = loadYaml(file);
+  return parseCameraYaml(util::readTextFile(file), file);
+}
+
+core::Camera parseCameraYaml(std::string_view text, const std::filesystem::path& file) {
+  const YAML::Node root = loadYaml(text, file);
   if (!root.IsMap() || !root["camera"] || !root["camera"].IsMap()) {
-    util::failAt(file, root ? lineOf(root) : 0, "expected a top-level 'camera:' mapping");
+    util::failAt(file, lineOf(root), "expected a top-level 'camera:' mapping");
   }
   const YAML::Node node = root["camera"];
+  rejectUnknownKeys(node, file);
   core::Camera camera = startingCamera(node, file);
   requireIntrinsics(node, file);
   readOptional(node, "name", file, camera.name);

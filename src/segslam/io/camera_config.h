@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "segslam/core/camera.h"
@@ -12,6 +13,9 @@ namespace segslam::io {
 // Built-in camera presets of the TUM RGB-D benchmark: "freiburg1", "freiburg2", "freiburg3".
 std::optional<core::Camera> cameraPreset(const std::string& name);
 std::vector<std::string> cameraPresetNames();
+
+// The preset called `name`; throws util::Error listing the known presets when there is none.
+core::Camera requireCameraPreset(const std::string& name);
 
 // Guesses the TUM preset from a dataset folder name ("rgbd_dataset_freiburg2_desk",
 // "tum_fr1_xyz_300", ...). Returns nothing when the name does not say.
@@ -27,9 +31,12 @@ std::optional<std::string> presetNameForDataset(const std::filesystem::path& dat
 //     distortion: [k1, k2, p1, p2, k3]   # optional, default zeros
 //     depth_factor: 5000                 # raw depth units per metre
 //     fps: 30
-// Throws util::Error naming the file (and line) on malformed YAML, missing keys, wrong types or
-// impossible values.
+// Throws util::Error naming the file (and line) on malformed YAML, missing or unknown keys, wrong
+// types or impossible values.
 core::Camera readCameraYaml(const std::filesystem::path& file);
+
+// The same for the text of such a file; `name` is the file named in error messages.
+core::Camera parseCameraYaml(std::string_view text, const std::filesystem::path& name);
 
 void writeCameraYaml(const std::filesystem::path& file, const core::Camera& camera);
 

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/os.h>
 
+#include <cmath>
+
 #include "segslam/util/error.h"
 #include "segslam/util/text_file.h"
 
@@ -13,42 +15,41 @@ namespace {
 constexpr const char* kTumFormat = "timestamp tx ty tz qx qy qz qw";
 
 core::StampedPose parsePoseRow(const util::TextRow& row, const std::filesystem::path& file) {
-  util::requireFields(row, 8, file, kTumFormat);
-  if (row.fields.size() > 8) {
-    util::failAt(file, row.line, fmt::format("expected '{}' but found {} fields", kTumFormat,
-                                             row.fields.size()));
-  }
+  util::requireFieldCount(row, 8, file, kTumFormat);
   static constexpr const char* kNames[] = {"timestamp", "tx", "ty", "tz", "qx", "qy", "qz", "qw"};
   double v[8];
   for (int i = 0; i < 8; ++i) v[i] = util::parseDouble(row.fields[i], file, row.line, kNames[i]);
   const Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
-  if (q.norm() < 1e-9) util::failAt(file, row.line, "quaternion is zero");
+  // Finite components can still overflow the norm (1e200), which would normalise to zero.
+  const double norm = q.norm();
+  if (norm < 1e-9) util::failAt(file, row.line, "quaternion is zero");
+  if (!std::isfinite(norm)) util::failAt(file, row.line, "quaternion is too large to normalise");
   return {v[0], geometry::poseFromTranslationQuaternion({v[1], v[2], v[3]}, q)};
 }
 
-}  // namespace
-
-core::Trajectory readTumTrajectory(const std::filesystem::path& file) {
-  const auto rows = util::readTextRows(file);
+core::Trajectory trajectoryFromRows(const std::vector<util::TextRow>& rows,
+                                    const std::filesystem::path& file) {
   if (rows.empty()) util::failAt(file, "trajectory file has no poses");
   std::vector<core::StampedPose> poses;
   poses.reserve(rows.size());
   for (const auto& row : rows) {
     auto pose = parsePoseRow(row, file);
     if (!poses.empty()) {
-      const double previous = poses.back().timestamp;
-      if (pose.timestamp == previous) {
-        util::failAt(file, row.line, fmt::format("duplicated timestamp {:.6f}", pose.timestamp));
-      }
-      if (pose.timestamp < previous) {
-        util::failAt(file, row.line,
-                     fmt::format("timestamp {:.6f} is out of order (previous {:.6f})",
-                                 pose.timestamp, previous));
-      }
+      util::requireIncreasingTimestamp(poses.back().timestamp, pose.timestamp, file, row.line);
     }
     poses.push_back(pose);
   }
   return core::Trajectory(std::move(poses));
+}
+
+}  // namespace
+
+core::Trajectory readTumTrajectory(const std::filesystem::path& file) {
+  return trajectoryFromRows(util::readTextRows(file), file);
+}
+
+core::Trajectory parseTumTrajectory(std::string_view text, const std::filesystem::path& name) {
+  return trajectoryFromRows(util::parseTextRows(text), name);
 }
 
 void writeTumTrajectory(const std::filesystem::path& file, const core::Trajectory& trajectory,

@@ -1,15 +1,21 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "segslam/core/trajectory.h"
 
 namespace segslam::io {
 
 // Reads a TUM trajectory file: `timestamp tx ty tz qx qy qz qw` per line, camera-to-world.
-// Throws util::Error naming file and line for malformed lines, non-finite numbers, zero
-// quaternions, and timestamps that are duplicated or out of order; also for an empty file.
+// Throws util::Error naming file and line for malformed lines, non-finite numbers, zero or
+// non-finite quaternions, and timestamps that are duplicated or out of order; also for an empty
+// file.
 core::Trajectory readTumTrajectory(const std::filesystem::path& file);
+
+// The same for the text of such a file; `name` is the file named in error messages.
+core::Trajectory parseTumTrajectory(std::string_view text, const std::filesystem::path& name);
 
 // Writes a TUM trajectory file (timestamps with 6 decimals, values with 9), creating parent
 // folders as needed.

@@ -1,11 +1,11 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "segslam/core/camera.h"
 #include "segslam/core/trajectory.h"
@@ -13,7 +13,8 @@
 namespace segslam::io {
 
 struct DatasetOptions {
-  // Maximum |t_rgb - t_depth| (seconds) when associating colour and depth, as the TUM tools.
+  // Maximum |t_rgb - t_depth| (seconds) when associating colour and depth, as the TUM tools; also
+  // used to find each frame's mask, label and instance images. Must be positive.
   double max_time_difference = 0.02;
   // Camera settings, in order of precedence: an explicit YAML file, an explicit preset name,
   // `camera.yaml` inside the dataset folder, the TUM preset named by the folder ("fr1", ...).
@@ -27,24 +28,31 @@ struct FrameRecord {
   std::filesystem::path rgb_path;
   double depth_timestamp = 0.0;
   std::filesystem::path depth_path;
-  std::optional<std::filesystem::path> mask_path;    // from mask.txt
-  std::optional<std::filesystem::path> labels_path;  // from labels.txt (semantic class ids)
+  std::optional<std::filesystem::path> mask_path;       // from mask.txt
+  std::optional<std::filesystem::path> labels_path;     // from labels.txt (semantic class ids)
   std::optional<std::filesystem::path> instances_path;  // from instances.txt (instance ids)
 };
 
 // Images of one frame, validated against the camera settings.
 struct RgbdFrame {
   double timestamp = 0.0;
-  cv::Mat rgb;        // CV_8UC3, BGR
+  cv::Mat rgb;        // CV_8UC3, BGR (8-bit grey and BGRA files are converted)
   cv::Mat depth;      // CV_32FC1, metres, 0 = no measurement
   cv::Mat mask;       // CV_8UC1, 255 = dynamic, 0 = static; empty when the dataset has no masks
   cv::Mat labels;     // CV_8UC1 core::SemanticClass ids; empty when absent
   cv::Mat instances;  // CV_16UC1 instance ids, 0 = none; empty when absent
 };
 
-// A sequence in the TUM RGB-D layout: rgb.txt, depth.txt (or associations.txt), optional
-// groundtruth.txt, mask.txt, labels.txt, instances.txt and camera.yaml. Opening parses and
-// validates every list file; any problem throws util::Error naming the file and line.
+// A sequence in the TUM RGB-D layout:
+// - rgb.txt and depth.txt (`timestamp path` per line), associated by nearest timestamp exactly
+//   as the TUM tools do; or associations.txt (associate.py output,
+//   `t_rgb rgb_path t_depth depth_path`), which then alone defines the frames;
+// - optional groundtruth.txt (TUM trajectory);
+// - optional mask.txt, labels.txt, instances.txt (`timestamp path`), matched to the frames by
+//   timestamp the same way; when such a list exists, every frame must have an entry in it;
+// - optional camera.yaml (see DatasetOptions for the camera precedence).
+// Opening parses and validates every list file and checks that every listed file exists, without
+// decoding any image; any problem throws util::Error naming the file and line.
 class TumDataset {
  public:
   static TumDataset open(const std::filesystem::path& folder, const DatasetOptions& options = {});
@@ -59,7 +67,7 @@ class TumDataset {
   [[nodiscard]] bool hasMasks() const;
 
   // Loads and validates the images of frame i: unreadable files, wrong image types and sizes
-  // throw util::Error naming the image file.
+  // throw util::Error naming the image file. i >= size() throws std::out_of_range.
   [[nodiscard]] RgbdFrame loadFrame(std::size_t i) const;
 
  private:

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -45,13 +46,19 @@ std::vector<TextRow> parseTextRows(std::string_view text) {
   return rows;
 }
 
-std::vector<TextRow> readTextRows(const std::filesystem::path& file) {
+std::string readTextFile(const std::filesystem::path& file) {
+  std::error_code ec;  // the error_code overloads: a failed status check must not throw
+  if (std::filesystem::is_directory(file, ec)) failAt(file, "is a folder, not a file");
   std::ifstream in(file, std::ios::binary);
-  if (!in) failAt(file, std::filesystem::exists(file) ? "cannot be read" : "file not found");
+  if (!in) failAt(file, std::filesystem::exists(file, ec) ? "cannot be read" : "file not found");
   std::ostringstream content;
   content << in.rdbuf();
   if (in.bad()) failAt(file, "read error");
-  return parseTextRows(content.str());
+  return std::move(content).str();
+}
+
+std::vector<TextRow> readTextRows(const std::filesystem::path& file) {
+  return parseTextRows(readTextFile(file));
 }
 
 double parseDouble(const std::string& field, const std::filesystem::path& file, int line,
@@ -59,7 +66,8 @@ double parseDouble(const std::string& field, const std::filesystem::path& file, 
   double value = 0.0;
   const char* first = field.data();
   const char* last = field.data() + field.size();
-  if (!field.empty() && *first == '+') ++first;
+  // from_chars rejects a leading '+', which hand-written files use; "+-1" must still fail.
+  if (last - first > 1 && first[0] == '+' && first[1] != '-') ++first;
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (ec != std::errc() || ptr != last || !std::isfinite(value)) {
     failAt(file, line, fmt::format("{} is not a finite number: '{}'", what, field));
@@ -72,6 +80,23 @@ void requireFields(const TextRow& row, std::size_t min_fields, const std::filesy
   if (row.fields.size() < min_fields) {
     failAt(file, row.line,
            fmt::format("expected '{}' but found {} field(s)", expected_format, row.fields.size()));
+  }
+}
+
+void requireFieldCount(const TextRow& row, std::size_t count, const std::filesystem::path& file,
+                       std::string_view expected_format) {
+  if (row.fields.size() != count) {
+    failAt(file, row.line,
+           fmt::format("expected '{}' but found {} field(s)", expected_format, row.fields.size()));
+  }
+}
+
+void requireIncreasingTimestamp(double previous, double timestamp,
+                                const std::filesystem::path& file, int line) {
+  if (timestamp == previous) failAt(file, line, fmt::format("duplicated timestamp {}", timestamp));
+  if (timestamp < previous) {
+    failAt(file, line,
+           fmt::format("timestamp {} is out of order (previous {})", timestamp, previous));
   }
 }
 

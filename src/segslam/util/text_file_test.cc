@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
+#include "segslam/testing/test_support.h"
 #include "segslam/util/error.h"
 
 namespace segslam::util {
@@ -15,6 +18,10 @@ TEST(TextFile, SplitsLikeTheTumTools) {
   EXPECT_EQ(rows[1].fields, (std::vector<std::string>{"2.0", "b.png"}));
   EXPECT_EQ(rows[2].line, 6);
   EXPECT_EQ(rows[2].fields.size(), 3u);
+  // Only a '#' in the first column starts a comment (as in the TUM tools' read_file_list).
+  const auto indented = parseTextRows(" # not a comment\n");
+  ASSERT_EQ(indented.size(), 1u);
+  EXPECT_EQ(indented[0].fields.front(), "#");
 }
 
 TEST(TextFile, ParseDoubleRejectsGarbageWithFileAndLine) {
@@ -29,6 +36,10 @@ TEST(TextFile, ParseDoubleRejectsGarbageWithFileAndLine) {
   EXPECT_THROW(parseDouble("nan", "f", 1, "x"), Error);
   EXPECT_THROW(parseDouble("inf", "f", 1, "x"), Error);
   EXPECT_THROW(parseDouble("", "f", 1, "x"), Error);
+  EXPECT_THROW(parseDouble("+", "f", 1, "x"), Error);
+  EXPECT_THROW(parseDouble("+-1", "f", 1, "x"), Error);
+  EXPECT_THROW(parseDouble("1e999", "f", 1, "x"), Error);
+  EXPECT_THROW(parseDouble("0x10", "f", 1, "x"), Error);
 }
 
 TEST(TextFile, MissingFileNamesTheFile) {
@@ -37,6 +48,50 @@ TEST(TextFile, MissingFileNamesTheFile) {
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(), "/nonexistent/rgb.txt: file not found");
+  }
+}
+
+TEST(TextFile, ReadsWholeFilesAndRejectsFolders) {
+  segslam::testing::ScopedTempDir temp;
+  const auto file = temp.path() / "list.txt";
+  std::ofstream(file) << "# c\n1 a\n";
+  EXPECT_EQ(readTextFile(file), "# c\n1 a\n");
+  EXPECT_EQ(readTextRows(file).front().line, 2);
+  try {
+    readTextFile(temp.path());
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.what(), temp.path().string() + ": is a folder, not a file");
+  }
+}
+
+TEST(TextFile, FieldCountMustMatchExactly) {
+  const TextRow row{4, {"1", "a", "b"}};
+  EXPECT_NO_THROW(requireFieldCount(row, 3, "f.txt", "t a b"));
+  EXPECT_NO_THROW(requireFields(row, 2, "f.txt", "t a"));
+  try {
+    requireFieldCount(row, 2, "f.txt", "t a");
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "f.txt:4: expected 't a' but found 3 field(s)");
+  }
+  EXPECT_THROW(requireFieldCount(row, 4, "f.txt", "t a b c"), Error);
+}
+
+TEST(TextFile, TimestampsMustIncreaseStrictly) {
+  EXPECT_NO_THROW(requireIncreasingTimestamp(1.0, 1.5, "f.txt", 3));
+  try {
+    requireIncreasingTimestamp(1.5, 1.5, "f.txt", 3);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "f.txt:3: duplicated timestamp 1.5");
+  }
+  try {
+    requireIncreasingTimestamp(1305031102.175304, 1305031102.1753, "f.txt", 9);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "f.txt:9: timestamp 1305031102.1753 is out of order (previous 1305031102.175304)");
   }
 }
 

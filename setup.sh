@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# One command from a fresh Debian 12 machine to a finished run: installs dependencies, builds
+# (Release with debug info) and runs the main job on the embedded default, a synthetic dynamic
+# sequence that segslam generates itself (no downloads, no external data).
+set -euo pipefail
+cd "$(dirname "$0")"
+scripts/install_deps.sh
+scripts/build.sh build
+./build/segslam synth --out out/demo_sequence --seed 1
+./build/segslam run --dataset out/demo_sequence --out out/demo_run

@@ -1,0 +1,46 @@
+#include "segslam/eval/trajectory_evaluation.h"
+
+#include <fmt/format.h>
+
+#include "segslam/io/trajectory_io.h"
+#include "segslam/util/error.h"
+
+namespace segslam::eval {
+
+namespace {
+
+// The metrics know nothing of files; failures about the pair are reported on the estimate, which
+// is the file a user most likely got wrong, naming the ground truth too.
+template <typename Evaluate>
+auto reportingFiles(const TrajectoryEvaluation& evaluation, std::string_view metric,
+                    Evaluate evaluate) {
+  try {
+    return evaluate();
+  } catch (const util::Error& e) {
+    util::failAt(
+        evaluation.estimate_file,
+        fmt::format("{} against {}: {}", metric, evaluation.ground_truth_file.string(), e.what()));
+  }
+}
+
+}  // namespace
+
+TrajectoryEvaluation evaluateTrajectoryFiles(const std::filesystem::path& ground_truth_file,
+                                             const std::filesystem::path& estimate_file,
+                                             const TrajectoryEvaluationOptions& options) {
+  TrajectoryEvaluation evaluation;
+  evaluation.ground_truth_file = ground_truth_file;
+  evaluation.estimate_file = estimate_file;
+  evaluation.options = options;
+  evaluation.ground_truth = io::readTumTrajectory(ground_truth_file);
+  evaluation.estimate = io::readTumTrajectory(estimate_file);
+  evaluation.ate = reportingFiles(evaluation, "ATE", [&] {
+    return evaluateAte(evaluation.ground_truth, evaluation.estimate, options.ate);
+  });
+  evaluation.rpe = reportingFiles(evaluation, "RPE", [&] {
+    return evaluateRpe(evaluation.ground_truth, evaluation.estimate, options.rpe);
+  });
+  return evaluation;
+}
+
+}  // namespace segslam::eval

@@ -1,0 +1,227 @@
+#include "segslam/io/tum_dataset.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+#include "segslam/io/camera_config.h"
+#include "segslam/io/frame_images.h"
+#include "segslam/io/image_list.h"
+#include "segslam/io/timestamp_association.h"
+#include "segslam/io/trajectory_io.h"
+#include "segslam/util/error.h"
+
+namespace segslam::io {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Lists that attach one more image to every frame, matched by timestamp.
+struct FrameImageList {
+  std::string_view file_name;
+  std::string_view what;
+  std::optional<fs::path> FrameRecord::*path;
+};
+
+constexpr FrameImageList kFrameImageLists[] = {
+    {"mask.txt", "mask", &FrameRecord::mask_path},
+    {"labels.txt", "label image", &FrameRecord::labels_path},
+    {"instances.txt", "instance image", &FrameRecord::instances_path},
+};
+
+// The error_code overloads: a failed status check (permissions) means "not there", not a throw.
+bool isFile(const fs::path& path) {
+  std::error_code ec;
+  return fs::is_regular_file(path, ec);
+}
+
+bool pathExists(const fs::path& path) {
+  std::error_code ec;
+  return fs::exists(path, ec);
+}
+
+void requireFolder(const fs::path& folder) {
+  std::error_code ec;
+  if (!fs::exists(folder, ec)) util::failAt(folder, "dataset folder not found");
+  if (!fs::is_directory(folder, ec)) util::failAt(folder, "is not a folder");
+}
+
+void requireMaxTimeDifference(double seconds) {
+  if (!(seconds > 0.0) || !std::isfinite(seconds)) {
+    throw util::Error(
+        fmt::format("the maximum time difference must be positive seconds, not {}", seconds));
+  }
+}
+
+void requireListedFileExists(const ImageListEntry& entry, const fs::path& folder,
+                             const fs::path& list_file) {
+  const fs::path path = folder / entry.path;
+  if (!isFile(path)) {
+    util::failAt(list_file, entry.line,
+                 fmt::format("listed file {} does not exist (or is not a file)", path.string()));
+  }
+}
+
+std::vector<ImageListEntry> readCheckedImageList(const fs::path& folder, std::string_view name) {
+  const fs::path file = folder / name;
+  auto entries = readImageList(file);
+  for (const auto& entry : entries) requireListedFileExists(entry, folder, file);
+  return entries;
+}
+
+std::vector<ImageListEntry> readNonEmptyImageList(const fs::path& folder, std::string_view name) {
+  auto entries = readCheckedImageList(folder, name);
+  if (entries.empty()) util::failAt(folder / name, "lists no images");
+  return entries;
+}
+
+std::vector<double> timestampsOf(const std::vector<ImageListEntry>& entries) {
+  std::vector<double> stamps;
+  stamps.reserve(entries.size());
+  for (const auto& entry : entries) stamps.push_back(entry.timestamp);
+  return stamps;
+}
+
+std::vector<double> timestampsOf(const std::vector<FrameRecord>& frames) {
+  std::vector<double> stamps;
+  stamps.reserve(frames.size());
+  for (const auto& frame : frames) stamps.push_back(frame.timestamp);
+  return stamps;
+}
+
+FrameRecord makeFrame(const fs::path& folder, const ImageListEntry& rgb,
+                      const ImageListEntry& depth) {
+  FrameRecord frame;
+  frame.timestamp = rgb.timestamp;
+  frame.rgb_path = folder / rgb.path;
+  frame.depth_timestamp = depth.timestamp;
+  frame.depth_path = folder / depth.path;
+  return frame;
+}
+
+std::vector<FrameRecord> framesFromAssociationList(const fs::path& file) {
+  const fs::path folder = file.parent_path();
+  const auto entries = readAssociationList(file);
+  if (entries.empty()) util::failAt(file, "lists no frames");
+  std::vector<FrameRecord> frames;
+  frames.reserve(entries.size());
+  for (const auto& entry : entries) {
+    requireListedFileExists(entry.rgb, folder, file);
+    requireListedFileExists(entry.depth, folder, file);
+    frames.push_back(makeFrame(folder, entry.rgb, entry.depth));
+  }
+  return frames;
+}
+
+std::vector<FrameRecord> framesFromColourAndDepthLists(const fs::path& folder,
+                                                       double max_difference) {
+  const auto rgb = readNonEmptyImageList(folder, "rgb.txt");
+  const auto depth = readNonEmptyImageList(folder, "depth.txt");
+  const auto pairs = associateTimestamps(timestampsOf(rgb), timestampsOf(depth), max_difference);
+  if (pairs.empty()) {
+    util::failAt(folder / "rgb.txt",
+                 fmt::format("no colour image has a depth image in depth.txt within {} s "
+                             "(colour {:.6f} to {:.6f}, depth {:.6f} to {:.6f})",
+                             max_difference, rgb.front().timestamp, rgb.back().timestamp,
+                             depth.front().timestamp, depth.back().timestamp));
+  }
+  std::vector<FrameRecord> frames;
+  frames.reserve(pairs.size());
+  for (const auto& [i, j] : pairs) frames.push_back(makeFrame(folder, rgb[i], depth[j]));
+  return frames;
+}
+
+std::vector<FrameRecord> readFrames(const fs::path& folder, double max_difference) {
+  const fs::path associations = folder / "associations.txt";
+  if (pathExists(associations)) return framesFromAssociationList(associations);
+  return framesFromColourAndDepthLists(folder, max_difference);
+}
+
+void attachFrameImages(const FrameImageList& list, const fs::path& folder, double max_difference,
+                       std::vector<FrameRecord>& frames) {
+  const fs::path file = folder / list.file_name;
+  if (!pathExists(file)) return;
+  const auto entries = readCheckedImageList(folder, list.file_name);
+  const auto pairs =
+      associateTimestamps(timestampsOf(frames), timestampsOf(entries), max_difference);
+  for (const auto& [i, j] : pairs) frames[i].*list.path = folder / entries[j].path;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    if (!(frames[i].*list.path)) {
+      util::failAt(file, fmt::format("no {} within {} s of frame {} (colour timestamp {:.6f}, {})",
+                                     list.what, max_difference, i, frames[i].timestamp,
+                                     frames[i].rgb_path.string()));
+    }
+  }
+}
+
+std::optional<core::Trajectory> readGroundTruth(const fs::path& folder) {
+  const fs::path file = folder / "groundtruth.txt";
+  if (!pathExists(file)) return std::nullopt;
+  return readTumTrajectory(file);
+}
+
+struct CameraChoice {
+  core::Camera camera;
+  std::string source;
+};
+
+CameraChoice chooseCamera(const fs::path& folder, const DatasetOptions& options) {
+  if (options.camera_file) {
+    return {readCameraYaml(*options.camera_file), "file " + options.camera_file->string()};
+  }
+  if (options.camera_preset) {
+    return {requireCameraPreset(*options.camera_preset), "preset " + *options.camera_preset};
+  }
+  const fs::path in_folder = folder / "camera.yaml";
+  if (pathExists(in_folder)) {
+    return {readCameraYaml(in_folder), "file " + in_folder.string() + " (in the dataset folder)"};
+  }
+  if (const auto preset = presetNameForDataset(folder)) {
+    return {requireCameraPreset(*preset), "preset " + *preset + " (from folder name)"};
+  }
+  throw util::Error(fmt::format(
+      "cannot tell which camera recorded {}: pass --camera FILE or --camera-preset NAME",
+      folder.string()));
+}
+
+}  // namespace
+
+TumDataset TumDataset::open(const fs::path& folder, const DatasetOptions& options) {
+  requireFolder(folder);
+  requireMaxTimeDifference(options.max_time_difference);
+  TumDataset dataset;
+  dataset.folder_ = folder;
+  dataset.frames_ = readFrames(folder, options.max_time_difference);
+  for (const auto& list : kFrameImageLists) {
+    attachFrameImages(list, folder, options.max_time_difference, dataset.frames_);
+  }
+  dataset.ground_truth_ = readGroundTruth(folder);
+  auto [camera, source] = chooseCamera(folder, options);
+  dataset.camera_ = std::move(camera);
+  dataset.camera_source_ = std::move(source);
+  return dataset;
+}
+
+bool TumDataset::hasMasks() const {
+  // open() gives either every frame a mask or none.
+  return !frames_.empty() && frames_.front().mask_path.has_value();
+}
+
+RgbdFrame TumDataset::loadFrame(std::size_t i) const {
+  const FrameRecord& record = frames_.at(i);
+  RgbdFrame frame;
+  frame.timestamp = record.timestamp;
+  frame.rgb = readColourImage(record.rgb_path, camera_);
+  const cv::Size size = frame.rgb.size();
+  frame.depth = readDepthImage(record.depth_path, camera_, size);
+  if (record.mask_path) frame.mask = readMaskImage(*record.mask_path, size);
+  if (record.labels_path) frame.labels = readLabelImage(*record.labels_path, size);
+  if (record.instances_path) frame.instances = readInstanceImage(*record.instances_path, size);
+  return frame;
+}
+
+}  // namespace segslam::io

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Runs the whole test suite: installs what is missing, builds, runs every test with CTest.
+# With --sanitize, builds and runs the tests under AddressSanitizer + UndefinedBehaviorSanitizer
+# (in build-asan/). Tests that need ../shared (real data, models) skip with a message without it.
+set -euo pipefail
+cd "$(dirname "$0")"
+scripts/install_deps.sh
+if [ "${1:-}" = "--sanitize" ]; then
+  scripts/build.sh build-asan -DSEGSLAM_SANITIZE=ON -DSEGSLAM_BUILD_BENCH=OFF
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  ctest --test-dir build-asan --output-on-failure -j"$(nproc)"
+else
+  scripts/build.sh build
+  ctest --test-dir build --output-on-failure -j"$(nproc)"
+fi
