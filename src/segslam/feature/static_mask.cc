@@ -1,0 +1,74 @@
+#include "segslam/feature/static_mask.h"
+
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace segslam::feature {
+namespace {
+
+// Largest |dx| with dx^2 + dy^2 <= radius^2, for every dy in [-radius, radius]: integer arithmetic
+// so that the disc is exactly the set of pixels within Euclidean distance `radius`.
+std::vector<int> discHalfWidths(int radius) {
+  std::vector<int> half_widths;
+  for (int dy = -radius; dy <= radius; ++dy) {
+    int dx = 0;
+    while ((dx + 1) * (dx + 1) + dy * dy <= radius * radius) ++dx;
+    half_widths.push_back(dx);
+  }
+  return half_widths;
+}
+
+}  // namespace
+
+StaticMask::StaticMask(const cv::Mat& dynamic_mask, int radius) : radius_(radius) {
+  if (radius < 0) {
+    throw std::invalid_argument("StaticMask: dilation radius must be >= 0, got " +
+                                std::to_string(radius));
+  }
+  if (dynamic_mask.empty()) return;
+  if (dynamic_mask.type() != CV_8UC1) {
+    throw std::invalid_argument("StaticMask: dynamic mask must be CV_8UC1");
+  }
+  cv::Mat dynamic01;
+  cv::threshold(dynamic_mask, dynamic01, 0, 1, cv::THRESH_BINARY);
+  cv::integral(dynamic01, integral_, CV_32S);
+  half_widths_ = discHalfWidths(radius);
+}
+
+int StaticMask::dynamicPixels(cv::Rect rect) const {
+  rect &= cv::Rect(0, 0, integral_.cols - 1, integral_.rows - 1);
+  if (rect.empty()) return 0;
+  const int x0 = rect.x;
+  const int x1 = rect.x + rect.width;
+  const int* top = integral_.ptr<int>(rect.y);
+  const int* bottom = integral_.ptr<int>(rect.y + rect.height);
+  return bottom[x1] - bottom[x0] - top[x1] + top[x0];
+}
+
+bool StaticMask::isStatic(cv::Point pixel) const {
+  if (everythingStatic()) return true;
+  for (int dy = -radius_; dy <= radius_; ++dy) {
+    const int half_width = half_widths_[dy + radius_];
+    if (dynamicPixels({pixel.x - half_width, pixel.y + dy, 2 * half_width + 1, 1}) > 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool StaticMask::isStaticRect(const cv::Rect& rect) const {
+  if (everythingStatic()) return true;
+  // The rectangle grown by radius holds the dilated rectangle, so this is slightly conservative
+  // at the corners; it only decides whether per-pixel checks can be skipped.
+  const cv::Rect grown(rect.x - radius_, rect.y - radius_, rect.width + 2 * radius_,
+                       rect.height + 2 * radius_);
+  return dynamicPixels(grown) == 0;
+}
+
+bool StaticMask::isDynamicRect(const cv::Rect& rect) const {
+  if (everythingStatic()) return false;
+  return dynamicPixels(rect) == rect.area();
+}
+
+}  // namespace segslam::feature
