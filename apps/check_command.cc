@@ -16,7 +16,7 @@ namespace segslam::apps {
 
 namespace {
 
-struct RunOptions {
+struct CheckOptions {
   std::filesystem::path dataset;
   std::filesystem::path out_dir;
   std::string camera_file;
@@ -27,7 +27,7 @@ struct RunOptions {
 
 std::filesystem::path defaultOutDir(const std::filesystem::path& dataset) {
   const auto name = std::filesystem::weakly_canonical(dataset).filename().string();
-  return std::filesystem::path("out") / ("run_" + (name.empty() ? "dataset" : name));
+  return std::filesystem::path("out") / ("check_" + (name.empty() ? "dataset" : name));
 }
 
 void writeJson(const std::filesystem::path& file, const nlohmann::json& json) {
@@ -36,7 +36,7 @@ void writeJson(const std::filesystem::path& file, const nlohmann::json& json) {
   if (!out) util::failAt(file, "cannot write");
 }
 
-nlohmann::json optionsJson(const RunOptions& options, const io::TumDataset& dataset) {
+nlohmann::json optionsJson(const CheckOptions& options, const io::TumDataset& dataset) {
   return {{"dataset", std::filesystem::absolute(options.dataset).string()},
           {"out", std::filesystem::absolute(options.out_dir).string()},
           {"camera_source", dataset.cameraSource()},
@@ -45,13 +45,14 @@ nlohmann::json optionsJson(const RunOptions& options, const io::TumDataset& data
           {"segslam_version", SEGSLAM_VERSION}};
 }
 
-void printSummary(const RunOptions& options, const io::TumDataset& dataset,
+void printSummary(const CheckOptions& options, const io::TumDataset& dataset,
                   const system::DatasetCheck& check, double seconds) {
-  fmt::print("\nsegslam run: {}\n", options.dataset.string());
+  fmt::print("\nsegslam check: {}\n", options.dataset.string());
   fmt::print("  camera        {} ({}x{}, fx {:.3f})\n", dataset.cameraSource(),
              dataset.camera().width, dataset.camera().height, dataset.camera().fx);
-  fmt::print("  frames        {} checked, {:.2f} s of recording at {:.1f} Hz ({:.0f} frames/s read)\n",
-             check.frames, check.duration_s, check.mean_frame_rate, check.frames / seconds);
+  fmt::print(
+      "  frames        {} checked, {:.2f} s of recording at {:.1f} Hz ({:.0f} frames/s read)\n",
+      check.frames, check.duration_s, check.mean_frame_rate, check.frames / seconds);
   fmt::print("  depth         {:.1f} % valid, {:.2f}-{:.2f} m, colour/depth gap <= {:.1f} ms\n",
              100.0 * check.valid_depth_share, check.min_depth_m, check.max_depth_m,
              1000.0 * check.max_rgb_depth_gap_s);
@@ -61,12 +62,10 @@ void printSummary(const RunOptions& options, const io::TumDataset& dataset,
   }
   fmt::print("  ground truth  {} poses, {} frames associated\n", check.ground_truth_poses,
              check.frames_with_ground_truth);
-  fmt::print("  ATE           not computed: tracking is not implemented yet, so there is no\n"
-             "                estimated trajectory to evaluate (the dataset was only validated)\n");
   fmt::print("  outputs       {}\n", std::filesystem::absolute(options.out_dir).string());
 }
 
-void runCommand(const RunOptions& options) {
+void checkCommand(const CheckOptions& options) {
   io::DatasetOptions dataset_options;
   dataset_options.max_time_difference = options.max_time_difference;
   if (!options.camera_file.empty()) dataset_options.camera_file = options.camera_file;
@@ -74,43 +73,45 @@ void runCommand(const RunOptions& options) {
   const auto dataset = io::TumDataset::open(options.dataset, dataset_options);
 
   std::filesystem::create_directories(options.out_dir);
-  util::addLogFile(options.out_dir / "run.log");
+  util::addLogFile(options.out_dir / "check.log");
   spdlog::info("dataset {}: {} frames, camera {}", options.dataset.string(), dataset.size(),
                dataset.cameraSource());
   io::writeCameraYaml(options.out_dir / "camera.yaml", dataset.camera());
-  writeJson(options.out_dir / "run_config.json", optionsJson(options, dataset));
+  writeJson(options.out_dir / "check_config.json", optionsJson(options, dataset));
 
   util::ProgressBar progress("checking frames", std::min(options.max_frames, dataset.size()));
   const auto check =
       system::checkDataset(dataset, options.max_frames, [&progress] { progress.advance(); });
   progress.finish();
   writeJson(options.out_dir / "dataset_check.json", system::toJson(check));
-  spdlog::warn("tracking is not implemented yet: no trajectory was estimated");
   printSummary(options, dataset, check, progress.elapsedSeconds());
 }
 
 }  // namespace
 
-void registerRunCommand(CLI::App& app) {
-  auto options = std::make_shared<RunOptions>();
-  auto* run = app.add_subcommand("run", "Run segslam on an RGB-D sequence in the TUM layout");
-  run->add_option("-d,--dataset", options->dataset, "Dataset folder (rgb.txt, depth.txt, ...)")
+void registerCheckCommand(CLI::App& app) {
+  auto options = std::make_shared<CheckOptions>();
+  auto* check = app.add_subcommand(
+      "check",
+      "Validate an RGB-D sequence in the TUM layout: load every frame and report statistics");
+  check->add_option("-d,--dataset", options->dataset, "Dataset folder (rgb.txt, depth.txt, ...)")
       ->required()
       ->check(CLI::ExistingDirectory);
-  run->add_option("-o,--out", options->out_dir,
-                  "Output folder (default: out/run_<dataset name>)");
-  run->add_option("--camera", options->camera_file, "Camera settings YAML (overrides presets)");
-  run->add_option("--camera-preset", options->camera_preset, "Camera preset")
+  check->add_option("-o,--out", options->out_dir,
+                    "Output folder (default: out/check_<dataset name>)");
+  check->add_option("--camera", options->camera_file, "Camera settings YAML (overrides presets)");
+  check->add_option("--camera-preset", options->camera_preset, "Camera preset")
       ->check(CLI::IsMember(io::cameraPresetNames()));
-  run->add_option("--max-time-diff", options->max_time_difference,
-                  "Max colour/depth timestamp difference for association (s)")
+  check
+      ->add_option("--max-time-diff", options->max_time_difference,
+                   "Max colour/depth timestamp difference for association (s)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  run->add_option("--max-frames", options->max_frames, "Process at most this many frames")
+  check->add_option("--max-frames", options->max_frames, "Process at most this many frames")
       ->check(CLI::PositiveNumber);
-  run->callback([options] {
+  check->callback([options] {
     if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset);
-    runCommand(*options);
+    checkCommand(*options);
   });
 }
 

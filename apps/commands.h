@@ -7,6 +7,7 @@
 namespace segslam::apps {
 
 void registerRunCommand(CLI::App& app);
+void registerCheckCommand(CLI::App& app);
 void registerEvalCommand(CLI::App& app);
 void registerSynthCommand(CLI::App& app);
 

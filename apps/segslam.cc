@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   app.parse_complete_callback([&] { segslam::util::setupLogging(log_level); });
 
   segslam::apps::registerRunCommand(app);
+  segslam::apps::registerCheckCommand(app);
   segslam::apps::registerEvalCommand(app);
   segslam::apps::registerSynthCommand(app);
 

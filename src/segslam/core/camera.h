@@ -1,9 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <string>
-
-#include <Eigen/Core>
 
 namespace segslam::core {
 

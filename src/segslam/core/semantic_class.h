@@ -24,8 +24,8 @@ enum class SemanticClass : std::uint8_t {
 };
 
 inline constexpr std::array<std::string_view, 11> kSemanticClassNames = {
-    "none", "wall", "floor", "ceiling", "table", "chair",
-    "cabinet", "box", "person", "monitor", "shelf"};
+    "none",    "wall", "floor",  "ceiling", "table", "chair",
+    "cabinet", "box",  "person", "monitor", "shelf"};
 
 inline constexpr std::string_view semanticClassName(SemanticClass c) {
   const auto i = static_cast<std::size_t>(c);

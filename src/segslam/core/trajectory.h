@@ -8,7 +8,7 @@
 namespace segslam::core {
 
 struct StampedPose {
-  double timestamp = 0.0;  // seconds
+  double timestamp = 0.0;                            // seconds
   geometry::Pose T_wc = geometry::Pose::Identity();  // camera-to-world
 };
 

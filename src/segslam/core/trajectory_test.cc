@@ -23,7 +23,8 @@ TEST(Trajectory, KeepsPosesInTimestampOrder) {
 }
 
 TEST(Trajectory, FindsPoseAtTimestampWithinTolerance) {
-  Trajectory trajectory({{1.0, translation(1.0)}, {2.0, translation(2.0)}, {3.0, translation(3.0)}});
+  Trajectory trajectory(
+      {{1.0, translation(1.0)}, {2.0, translation(2.0)}, {3.0, translation(3.0)}});
   ASSERT_TRUE(trajectory.poseAt(2.0).has_value());
   EXPECT_DOUBLE_EQ(trajectory.poseAt(2.0)->translation().x(), 2.0);
   EXPECT_TRUE(trajectory.poseAt(2.0000005).has_value());

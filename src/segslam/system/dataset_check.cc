@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
 #include <opencv2/core.hpp>
 
 #include "segslam/io/timestamp_association.h"

@@ -2,9 +2,8 @@
 
 #include <cstddef>
 #include <functional>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "segslam/io/tum_dataset.h"
 
@@ -14,10 +13,10 @@ namespace segslam::system {
 // `segslam run` produces: proof that every frame loads and agrees with the camera settings.
 struct DatasetCheck {
   std::size_t frames = 0;
-  double duration_s = 0.0;         // last minus first colour timestamp
-  double mean_frame_rate = 0.0;    // frames per second of the recording
+  double duration_s = 0.0;           // last minus first colour timestamp
+  double mean_frame_rate = 0.0;      // frames per second of the recording
   double max_rgb_depth_gap_s = 0.0;  // worst colour/depth timestamp difference after association
-  double valid_depth_share = 0.0;  // share of pixels with a depth measurement
+  double valid_depth_share = 0.0;    // share of pixels with a depth measurement
   double min_depth_m = 0.0;
   double max_depth_m = 0.0;
   std::size_t frames_with_dynamic_pixels = 0;  // only when the dataset has masks

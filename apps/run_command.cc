@@ -1,0 +1,116 @@
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <limits>
+
+#include "commands.h"
+#include "segslam/io/camera_config.h"
+#include "segslam/io/tum_dataset.h"
+#include "segslam/system/sequence_runner.h"
+#include "segslam/util/logging.h"
+#include "segslam/util/progress.h"
+
+namespace segslam::apps {
+
+namespace {
+
+struct RunOptions {
+  std::filesystem::path dataset;
+  std::filesystem::path out_dir;
+  std::string camera_file;
+  std::string camera_preset;
+  double max_time_difference = 0.02;
+  std::string masks = "none";
+  system::SequenceRunOptions run;
+};
+
+std::filesystem::path defaultOutDir(const std::filesystem::path& dataset) {
+  const auto name = std::filesystem::weakly_canonical(dataset).filename().string();
+  return std::filesystem::path("out") / ("run_" + (name.empty() ? "dataset" : name));
+}
+
+void printSummary(const RunOptions& options, const system::SequenceRunSummary& s) {
+  fmt::print("\nsegslam run: {} (masks: {})\n", options.dataset.string(), options.masks);
+  fmt::print("  frames     {} tracked of {} ({} lost), {} keyframes, {} map points\n",
+             s.tracked_frames, s.frames, s.lost_frames, s.keyframes, s.map_points);
+  fmt::print(
+      "  tracking   median {:.1f} ms, p95 {:.1f} ms per frame (ORB extraction median {:.1f} ms)\n",
+      s.tracking.median_ms, s.tracking.p95_ms, s.extraction.median_ms);
+  fmt::print(
+      "  speed      {:.1f} frames/s end to end, {:.1f} s wall, local BA {:.1f} s, peak RSS {} MB\n",
+      s.frames_per_second, s.wall_seconds, s.bundle_adjustment_seconds, s.peak_rss_mb);
+  if (s.evaluation) {
+    const auto& ate = s.evaluation->ate.statistics;
+    const auto& rpe = s.evaluation->rpe;
+    fmt::print(
+        "  ATE        rmse {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}) over {} poses\n",
+        ate.rmse, ate.mean, ate.median, ate.max, ate.count);
+    fmt::print("  RPE (1 s)  {:.4f} m, {:.3f} deg rmse\n", rpe.translational.rmse,
+               rpe.rotational_deg.rmse);
+  } else {
+    fmt::print("  ATE        not computed: the dataset has no groundtruth.txt\n");
+  }
+  fmt::print("  outputs    {}\n", std::filesystem::absolute(options.out_dir).string());
+}
+
+void runCommand(RunOptions& options) {
+  io::DatasetOptions dataset_options;
+  dataset_options.max_time_difference = options.max_time_difference;
+  if (!options.camera_file.empty()) dataset_options.camera_file = options.camera_file;
+  if (!options.camera_preset.empty()) dataset_options.camera_preset = options.camera_preset;
+  const auto dataset = io::TumDataset::open(options.dataset, dataset_options);
+  options.run.masks = system::maskSourceFromName(options.masks);
+
+  std::filesystem::create_directories(options.out_dir);
+  util::addLogFile(options.out_dir / "run.log");
+  io::writeCameraYaml(options.out_dir / "camera.yaml", dataset.camera());
+  spdlog::info("dataset {}: {} frames, camera {}, masks {}", options.dataset.string(),
+               dataset.size(), dataset.cameraSource(), options.masks);
+
+  util::ProgressBar progress("tracking", std::min(options.run.max_frames, dataset.size()));
+  const auto summary = system::runSequence(dataset, options.run, options.out_dir,
+                                           [&](const system::FrameStats&) { progress.advance(); });
+  progress.finish();
+  printSummary(options, summary);
+}
+
+}  // namespace
+
+void registerRunCommand(CLI::App& app) {
+  auto options = std::make_shared<RunOptions>();
+  auto* run = app.add_subcommand("run", "Run SLAM on an RGB-D sequence in the TUM layout");
+  run->add_option("-d,--dataset", options->dataset, "Dataset folder (rgb.txt, depth.txt, ...)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  run->add_option("-o,--out", options->out_dir, "Output folder (default: out/run_<dataset name>)");
+  run->add_option("--camera", options->camera_file, "Camera settings YAML (overrides presets)");
+  run->add_option("--camera-preset", options->camera_preset, "Camera preset")
+      ->check(CLI::IsMember(io::cameraPresetNames()));
+  run->add_option("--max-time-diff", options->max_time_difference,
+                  "Max colour/depth timestamp difference for association (s)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  run->add_option("--seg", options->masks,
+                  "Dynamic masks: none, or oracle (the dataset's ground-truth mask.txt)")
+      ->capture_default_str()
+      ->check(CLI::IsMember(system::maskSourceNames()));
+  run->add_option("--mask-dilation", options->run.slam.mask_dilation_px,
+                  "Dilation of the dynamic mask before feature extraction (pixels)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  run->add_option("--features", options->run.slam.orb.num_features, "ORB features per frame")
+      ->capture_default_str()
+      ->check(CLI::Range(100, 10000));
+  run->add_flag("--deterministic", options->run.slam.deterministic,
+                "Run local mapping inline after each keyframe: reproducible results, slower");
+  run->add_option("--seed", options->run.seed, "Seed of the random number generators")
+      ->capture_default_str();
+  run->add_option("--max-frames", options->run.max_frames, "Process at most this many frames")
+      ->check(CLI::PositiveNumber);
+  run->callback([options] {
+    if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset);
+    runCommand(*options);
+  });
+}
+
+}  // namespace segslam::apps

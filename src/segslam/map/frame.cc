@@ -1,0 +1,141 @@
+#include "segslam/map/frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/calib3d.hpp>
+
+namespace segslam::map {
+
+namespace {
+
+cv::Mat cameraMatrix(const core::Camera& c) {
+  return (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
+}
+
+cv::Mat distortionCoefficients(const core::Camera& c) {
+  return cv::Mat(1, 5, CV_64F, const_cast<double*>(c.distortion.data())).clone();
+}
+
+std::vector<cv::Point2f> undistortPoints(const std::vector<cv::Point2f>& points,
+                                         const core::Camera& camera) {
+  if (!camera.hasDistortion() || points.empty()) return points;
+  std::vector<cv::Point2f> undistorted;
+  const cv::Mat k = cameraMatrix(camera);
+  cv::undistortPoints(points, undistorted, k, distortionCoefficients(camera), cv::noArray(), k);
+  return undistorted;
+}
+
+cv::Rect2d undistortedBounds(const core::Camera& camera) {
+  const float w = static_cast<float>(camera.width);
+  const float h = static_cast<float>(camera.height);
+  const auto corners = undistortPoints({{0, 0}, {w, 0}, {0, h}, {w, h}}, camera);
+  const double min_x = std::min(corners[0].x, corners[2].x);
+  const double max_x = std::max(corners[1].x, corners[3].x);
+  const double min_y = std::min(corners[0].y, corners[1].y);
+  const double max_y = std::max(corners[2].y, corners[3].y);
+  return {min_x, min_y, max_x - min_x, max_y - min_y};
+}
+
+}  // namespace
+
+KeypointGrid::KeypointGrid(const std::vector<cv::KeyPoint>& keypoints, const cv::Rect2d& bounds)
+    : bounds_(bounds),
+      cell_width_(bounds.width / kCols),
+      cell_height_(bounds.height / kRows),
+      cells_(kCols * kRows) {
+  for (std::size_t i = 0; i < keypoints.size(); ++i) {
+    const int col = static_cast<int>((keypoints[i].pt.x - bounds_.x) / cell_width_);
+    const int row = static_cast<int>((keypoints[i].pt.y - bounds_.y) / cell_height_);
+    if (col >= 0 && col < kCols && row >= 0 && row < kRows) cells_[row * kCols + col].push_back(i);
+  }
+}
+
+bool KeypointGrid::contains(double u, double v) const {
+  return u >= bounds_.x && u < bounds_.x + bounds_.width && v >= bounds_.y &&
+         v < bounds_.y + bounds_.height;
+}
+
+std::vector<std::size_t> KeypointGrid::featuresInArea(const std::vector<cv::KeyPoint>& keypoints,
+                                                      double u, double v, double radius,
+                                                      int min_level, int max_level) const {
+  std::vector<std::size_t> found;
+  if (cells_.empty()) return found;
+  const int col_min = std::max(0, static_cast<int>((u - radius - bounds_.x) / cell_width_));
+  const int col_max = std::min(kCols - 1, static_cast<int>((u + radius - bounds_.x) / cell_width_));
+  const int row_min = std::max(0, static_cast<int>((v - radius - bounds_.y) / cell_height_));
+  const int row_max =
+      std::min(kRows - 1, static_cast<int>((v + radius - bounds_.y) / cell_height_));
+  if (col_min > col_max || row_min > row_max) return found;
+  const double radius2 = radius * radius;
+  for (int row = row_min; row <= row_max; ++row) {
+    for (int col = col_min; col <= col_max; ++col) {
+      for (std::size_t i : cells_[row * kCols + col]) {
+        const cv::KeyPoint& kp = keypoints[i];
+        if (kp.octave < min_level || (max_level >= 0 && kp.octave > max_level)) continue;
+        const double du = kp.pt.x - u;
+        const double dv = kp.pt.y - v;
+        if (du * du + dv * dv < radius2) found.push_back(i);
+      }
+    }
+  }
+  return found;
+}
+
+FrameCamera::FrameCamera(const core::Camera& cam, double bf, double close_depth_factor,
+                         const feature::ScaleLevels& scale_levels)
+    : camera(cam),
+      stereo{cam.fx, cam.fy, cam.cx, cam.cy, bf},
+      close_depth_m(close_depth_factor * bf / cam.fx),
+      undistorted_bounds(undistortedBounds(cam)),
+      levels(scale_levels) {}
+
+Frame::Frame(std::uint64_t frame_id, double stamp, std::vector<cv::KeyPoint> raw_keypoints,
+             cv::Mat frame_descriptors, const cv::Mat& depth_m, cv::Mat mask,
+             std::shared_ptr<const FrameCamera> frame_camera)
+    : id(frame_id),
+      timestamp(stamp),
+      camera(std::move(frame_camera)),
+      keypoints(std::move(raw_keypoints)),
+      descriptors(std::move(frame_descriptors)),
+      dynamic_mask(std::move(mask)) {
+  std::vector<cv::Point2f> points;
+  points.reserve(keypoints.size());
+  for (const auto& kp : keypoints) points.push_back(kp.pt);
+  const auto undistorted = undistortPoints(points, camera->camera);
+  keypoints_un = keypoints;
+  depth.assign(keypoints.size(), -1.0f);
+  right_u.assign(keypoints.size(), -1.0f);
+  for (std::size_t i = 0; i < keypoints.size(); ++i) {
+    keypoints_un[i].pt = undistorted[i];
+    const int u = static_cast<int>(std::lround(keypoints[i].pt.x));
+    const int v = static_cast<int>(std::lround(keypoints[i].pt.y));
+    if (u < 0 || v < 0 || u >= depth_m.cols || v >= depth_m.rows) continue;
+    const float z = depth_m.at<float>(v, u);
+    if (z > 0.0f) {
+      depth[i] = z;
+      right_u[i] = keypoints_un[i].pt.x - static_cast<float>(camera->stereo.bf / z);
+    }
+  }
+  grid = KeypointGrid(keypoints_un, camera->undistorted_bounds);
+  map_points.assign(keypoints.size(), nullptr);
+  outlier.assign(keypoints.size(), false);
+}
+
+optim::RgbdObservation Frame::observation(std::size_t i) const {
+  const auto& kp = keypoints_un[i];
+  return {{kp.pt.x, kp.pt.y}, right_u[i], camera->levels.inverseSigma2()[kp.octave]};
+}
+
+Eigen::Vector3d Frame::unproject(std::size_t i) const {
+  return camera->camera.backProject(keypoints_un[i].pt.x, keypoints_un[i].pt.y, depth[i]);
+}
+
+bool Frame::isDynamicAt(double u, double v) const {
+  if (dynamic_mask.empty()) return false;
+  const int x = static_cast<int>(std::lround(u));
+  const int y = static_cast<int>(std::lround(v));
+  if (x < 0 || y < 0 || x >= dynamic_mask.cols || y >= dynamic_mask.rows) return false;
+  return dynamic_mask.at<std::uint8_t>(y, x) != 0;
+}
+
+}  // namespace segslam::map

@@ -1,0 +1,92 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
+
+#include "segslam/core/camera.h"
+#include "segslam/feature/scale_levels.h"
+#include "segslam/geometry/pose.h"
+#include "segslam/optim/rgbd_observation.h"
+
+namespace segslam::map {
+
+class KeyFrame;
+class MapPoint;
+
+// Keypoint indices bucketed by undistorted position, for fast "features near (u, v)" queries.
+class KeypointGrid {
+ public:
+  KeypointGrid() = default;
+  KeypointGrid(const std::vector<cv::KeyPoint>& keypoints, const cv::Rect2d& bounds);
+
+  // Indices of keypoints within `radius` pixels of (u, v) on pyramid levels [min_level, max_level]
+  // (max_level < 0: no upper bound).
+  [[nodiscard]] std::vector<std::size_t> featuresInArea(const std::vector<cv::KeyPoint>& keypoints,
+                                                        double u, double v, double radius,
+                                                        int min_level = 0,
+                                                        int max_level = -1) const;
+  [[nodiscard]] bool contains(double u, double v) const;
+
+ private:
+  static constexpr int kCols = 64;
+  static constexpr int kRows = 48;
+  cv::Rect2d bounds_;
+  double cell_width_ = 1.0;
+  double cell_height_ = 1.0;
+  std::vector<std::vector<std::size_t>> cells_;
+};
+
+// The static description of the sensor that every frame shares.
+struct FrameCamera {
+  core::Camera camera;
+  optim::StereoIntrinsics stereo;
+  double close_depth_m = 3.0;     // depth below which a keypoint's depth is trusted for new points
+  cv::Rect2d undistorted_bounds;  // image area after undistortion
+  feature::ScaleLevels levels;
+
+  FrameCamera(const core::Camera& camera, double bf, double close_depth_factor,
+              const feature::ScaleLevels& levels);
+};
+
+// One RGB-D image reduced to what tracking needs: keypoints (raw and undistorted), their depth
+// and virtual right coordinate, descriptors, and the map points they were matched to.
+class Frame {
+ public:
+  Frame() = default;
+  // depth_m: CV_32F metres, registered to the colour image (0 = no measurement).
+  // dynamic_mask: empty or CV_8U, non-zero where something moves (already dilated).
+  Frame(std::uint64_t id, double timestamp, std::vector<cv::KeyPoint> keypoints,
+        cv::Mat descriptors, const cv::Mat& depth_m, cv::Mat dynamic_mask,
+        std::shared_ptr<const FrameCamera> camera);
+
+  [[nodiscard]] std::size_t size() const { return keypoints.size(); }
+  [[nodiscard]] optim::RgbdObservation observation(std::size_t i) const;
+  // Camera-frame point of keypoint i from its depth (requires depth[i] > 0).
+  [[nodiscard]] Eigen::Vector3d unproject(std::size_t i) const;
+  // True when the undistorted pixel lies in a dynamic area of this frame.
+  [[nodiscard]] bool isDynamicAt(double u, double v) const;
+  [[nodiscard]] Eigen::Vector3d cameraCentre() const { return T_cw.inverse().translation(); }
+
+  std::uint64_t id = 0;
+  double timestamp = 0.0;
+  std::shared_ptr<const FrameCamera> camera;
+  std::vector<cv::KeyPoint> keypoints;     // as detected (distorted image)
+  std::vector<cv::KeyPoint> keypoints_un;  // undistorted
+  std::vector<float> depth;                // metres, <= 0: none
+  std::vector<float> right_u;              // virtual right column, < 0: none
+  cv::Mat descriptors;                     // N x 32, CV_8U
+  cv::Mat dynamic_mask;
+  KeypointGrid grid;
+
+  std::vector<std::shared_ptr<MapPoint>> map_points;  // match per keypoint, may be null
+  std::vector<bool> outlier;
+
+  geometry::Pose T_cw = geometry::Pose::Identity();  // world-to-camera
+  bool has_pose = false;
+  std::shared_ptr<KeyFrame> reference_keyframe;
+};
+
+}  // namespace segslam::map

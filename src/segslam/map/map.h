@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "segslam/map/keyframe.h"
+#include "segslam/map/map_point.h"
+
+namespace segslam::map {
+
+// The map: keyframes and map points. `mutex` guards every keyframe and map point: tracking holds
+// it while it handles a frame, local mapping while it reads or writes the map (never while it
+// optimises). Keyframes and points that go bad stay owned here, so raw pointers between them
+// never dangle; clear() breaks the shared_ptr cycles at shutdown.
+class Map {
+ public:
+  Map() = default;
+  ~Map();
+  Map(const Map&) = delete;
+  Map& operator=(const Map&) = delete;
+
+  std::shared_ptr<KeyFrame> createKeyFrame(const Frame& frame);
+  std::shared_ptr<MapPoint> createMapPoint(const Eigen::Vector3d& position, KeyFrame* reference);
+
+  // Live (not bad) keyframes / map points, ordered by id.
+  [[nodiscard]] std::vector<std::shared_ptr<KeyFrame>> keyFrames() const;
+  [[nodiscard]] std::vector<std::shared_ptr<MapPoint>> mapPoints() const;
+  [[nodiscard]] std::size_t numKeyFrames() const;
+  [[nodiscard]] std::size_t numMapPoints() const;
+  // Drops bad map points from the store (they may still be referenced by frames in flight).
+  void pruneBadMapPoints();
+  void clear();
+
+  mutable std::mutex mutex;
+
+ private:
+  std::vector<std::shared_ptr<KeyFrame>> keyframes_;
+  std::vector<std::shared_ptr<MapPoint>> map_points_;
+  std::uint64_t next_keyframe_id_ = 0;
+  std::uint64_t next_map_point_id_ = 0;
+};
+
+}  // namespace segslam::map

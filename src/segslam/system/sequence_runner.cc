@@ -1,0 +1,183 @@
+#include "segslam/system/sequence_runner.h"
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <opencv2/core/utility.hpp>
+
+#include "segslam/eval/evaluation_plots.h"
+#include "segslam/eval/evaluation_report.h"
+#include "segslam/io/trajectory_io.h"
+#include "segslam/util/error.h"
+
+namespace segslam::system {
+
+namespace {
+
+TimingSummary summarise(std::vector<double> values) {
+  TimingSummary summary;
+  if (values.empty()) return summary;
+  std::sort(values.begin(), values.end());
+  const auto at = [&](double q) {
+    return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5)];
+  };
+  summary.median_ms = at(0.5);
+  summary.p95_ms = at(0.95);
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  summary.mean_ms = sum / static_cast<double>(values.size());
+  summary.max_ms = values.back();
+  return summary;
+}
+
+long peakRssMegabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024;
+}
+
+const char* stateName(tracking::TrackingState state) {
+  switch (state) {
+    case tracking::TrackingState::kOk:
+      return "ok";
+    case tracking::TrackingState::kLost:
+      return "lost";
+    case tracking::TrackingState::kNotInitialised:
+      break;
+  }
+  return "not_initialised";
+}
+
+void writeFrameLog(const std::filesystem::path& file, const std::vector<FrameStats>& stats) {
+  auto out = fmt::output_file(file.string());
+  out.print("frame,timestamp,extraction_ms,tracking_ms,keypoints,matches,state,keyframe\n");
+  for (const auto& s : stats) {
+    out.print("{},{:.6f},{:.3f},{:.3f},{},{},{},{}\n", s.frame_id, s.timestamp, s.extraction_ms,
+              s.tracking_ms, s.keypoints, s.matches, stateName(s.state), s.keyframe ? 1 : 0);
+  }
+}
+
+nlohmann::json timingJson(const TimingSummary& t) {
+  return {{"median_ms", t.median_ms},
+          {"p95_ms", t.p95_ms},
+          {"mean_ms", t.mean_ms},
+          {"max_ms", t.max_ms}};
+}
+
+void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
+              const std::filesystem::path& out_dir, const core::Trajectory& estimate,
+              SequenceRunSummary& summary) {
+  if (!dataset.groundTruth() || estimate.size() < 2) return;
+  eval::TrajectoryEvaluation evaluation;
+  evaluation.ground_truth_file = dataset.folder() / "groundtruth.txt";
+  evaluation.estimate_file = out_dir / "CameraTrajectory.txt";
+  evaluation.options = options.evaluation;
+  evaluation.ground_truth = *dataset.groundTruth();
+  evaluation.estimate = estimate;
+  evaluation.ate = eval::evaluateAte(evaluation.ground_truth, estimate, options.evaluation.ate);
+  evaluation.rpe = eval::evaluateRpe(evaluation.ground_truth, estimate, options.evaluation.rpe);
+  eval::writeEvaluationJson(out_dir / "evaluation.json", evaluation);
+  summary.outputs.push_back(out_dir / "evaluation.json");
+  for (auto& plot : eval::writeEvaluationPlots(out_dir / "plots", evaluation)) {
+    summary.outputs.push_back(plot);
+  }
+  summary.evaluation = std::move(evaluation);
+}
+
+cv::Mat maskFor(const io::RgbdFrame& frame, MaskSource source) {
+  return source == MaskSource::kOracle ? frame.mask : cv::Mat();
+}
+
+}  // namespace
+
+std::vector<std::string> maskSourceNames() { return {"none", "oracle"}; }
+
+MaskSource maskSourceFromName(const std::string& name) {
+  if (name == "oracle") return MaskSource::kOracle;
+  if (name == "none") return MaskSource::kNone;
+  throw util::Error(fmt::format("unknown mask source '{}' (known: none, oracle)", name));
+}
+
+std::string maskSourceName(MaskSource source) {
+  return source == MaskSource::kOracle ? "oracle" : "none";
+}
+
+SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
+                               const std::filesystem::path& out_dir,
+                               const std::function<void(const FrameStats&)>& on_frame) {
+  if (options.masks == MaskSource::kOracle && !dataset.hasMasks()) {
+    util::failAt(dataset.folder() / "mask.txt",
+                 "oracle masks requested (--seg oracle) but the dataset has no mask.txt");
+  }
+  cv::setRNGSeed(static_cast<int>(options.seed));
+  std::filesystem::create_directories(out_dir);
+  const auto start = std::chrono::steady_clock::now();
+  SequenceRunSummary summary;
+  summary.frames = std::min(options.max_frames, dataset.size());
+  std::vector<FrameStats> stats;
+  {
+    SlamSystem slam(dataset.camera(), options.slam);
+    for (std::size_t i = 0; i < summary.frames; ++i) {
+      const io::RgbdFrame frame = dataset.loadFrame(i);
+      stats.push_back(slam.processFrame(frame.timestamp, frame.rgb, frame.depth,
+                                        maskFor(frame, options.masks)));
+      if (on_frame) on_frame(stats.back());
+    }
+    slam.finish();
+    summary.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto trajectory = slam.cameraTrajectory();
+    io::writeTumTrajectory(out_dir / "CameraTrajectory.txt", trajectory,
+                           "segslam camera trajectory");
+    io::writeTumTrajectory(out_dir / "KeyFrameTrajectory.txt", slam.keyFrameTrajectory(),
+                           "segslam keyframe trajectory");
+    summary.outputs = {out_dir / "CameraTrajectory.txt", out_dir / "KeyFrameTrajectory.txt"};
+    summary.tracked_frames = trajectory.size();
+    summary.keyframes = slam.numKeyFrames();
+    summary.map_points = slam.numMapPoints();
+    summary.bundle_adjustment_seconds = slam.bundleAdjustmentSeconds();
+    evaluate(dataset, options, out_dir, trajectory, summary);
+  }
+  std::vector<double> tracking_ms;
+  std::vector<double> extraction_ms;
+  for (const auto& s : stats) {
+    tracking_ms.push_back(s.tracking_ms);
+    extraction_ms.push_back(s.extraction_ms);
+    if (s.state == tracking::TrackingState::kLost) ++summary.lost_frames;
+  }
+  summary.tracking = summarise(tracking_ms);
+  summary.extraction = summarise(extraction_ms);
+  summary.frames_per_second = summary.frames / std::max(summary.wall_seconds, 1e-9);
+  summary.peak_rss_mb = peakRssMegabytes();
+  writeFrameLog(out_dir / "frame_log.csv", stats);
+  summary.outputs.push_back(out_dir / "frame_log.csv");
+  std::ofstream(out_dir / "summary.json") << toJson(summary).dump(2) << "\n";
+  summary.outputs.push_back(out_dir / "summary.json");
+  return summary;
+}
+
+nlohmann::json toJson(const SequenceRunSummary& summary) {
+  nlohmann::json json = {{"frames", summary.frames},
+                         {"tracked_frames", summary.tracked_frames},
+                         {"lost_frames", summary.lost_frames},
+                         {"keyframes", summary.keyframes},
+                         {"map_points", summary.map_points},
+                         {"tracking_time", timingJson(summary.tracking)},
+                         {"extraction_time", timingJson(summary.extraction)},
+                         {"wall_seconds", summary.wall_seconds},
+                         {"frames_per_second", summary.frames_per_second},
+                         {"bundle_adjustment_seconds", summary.bundle_adjustment_seconds},
+                         {"peak_rss_mb", summary.peak_rss_mb}};
+  if (summary.evaluation) {
+    json["ate_rmse_m"] = summary.evaluation->ate.statistics.rmse;
+    json["rpe_translational_rmse_m"] = summary.evaluation->rpe.translational.rmse;
+    json["rpe_rotational_rmse_deg"] = summary.evaluation->rpe.rotational_deg.rmse;
+  }
+  return json;
+}
+
+}  // namespace segslam::system

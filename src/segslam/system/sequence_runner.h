@@ -1,0 +1,67 @@
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "segslam/eval/trajectory_evaluation.h"
+#include "segslam/io/tum_dataset.h"
+#include "segslam/system/slam_system.h"
+
+namespace segslam::system {
+
+// Where each frame's dynamic mask comes from.
+enum class MaskSource {
+  kNone,    // no masks: everything is treated as static
+  kOracle,  // the dataset's ground-truth masks (mask.txt)
+};
+std::vector<std::string> maskSourceNames();
+MaskSource maskSourceFromName(const std::string& name);
+std::string maskSourceName(MaskSource source);
+
+struct SequenceRunOptions {
+  SlamOptions slam;
+  MaskSource masks = MaskSource::kNone;
+  std::size_t max_frames = std::numeric_limits<std::size_t>::max();
+  eval::TrajectoryEvaluationOptions evaluation;
+  std::uint64_t seed = 0;
+};
+
+struct TimingSummary {
+  double median_ms = 0.0;
+  double p95_ms = 0.0;
+  double mean_ms = 0.0;
+  double max_ms = 0.0;
+};
+
+struct SequenceRunSummary {
+  std::size_t frames = 0;
+  std::size_t tracked_frames = 0;
+  std::size_t lost_frames = 0;
+  std::size_t keyframes = 0;
+  std::size_t map_points = 0;
+  TimingSummary tracking;  // per frame, extraction included
+  TimingSummary extraction;
+  double wall_seconds = 0.0;       // frame loading included
+  double frames_per_second = 0.0;  // end to end
+  double bundle_adjustment_seconds = 0.0;
+  long peak_rss_mb = 0;
+  std::optional<eval::TrajectoryEvaluation> evaluation;
+  std::vector<std::filesystem::path> outputs;
+};
+
+// Runs SLAM over a dataset and writes the run folder: CameraTrajectory.txt and
+// KeyFrameTrajectory.txt (TUM format), frame_log.csv (per-frame timings and state),
+// summary.json, and, with ground truth, evaluation.json and the evaluation plots.
+// Throws util::Error when the dataset lacks what the options need (e.g. oracle masks).
+SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
+                               const std::filesystem::path& out_dir,
+                               const std::function<void(const FrameStats&)>& on_frame);
+
+nlohmann::json toJson(const SequenceRunSummary& summary);
+
+}  // namespace segslam::system

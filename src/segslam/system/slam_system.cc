@@ -1,0 +1,118 @@
+#include "segslam/system/slam_system.h"
+
+#include <chrono>
+#include <opencv2/imgproc.hpp>
+
+namespace segslam::system {
+
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+geometry::Pose resolvedPose(const tracking::Tracker::FramePoseRecord& record) {
+  // A culled reference keyframe is replaced by its parent, composing the frozen relative pose.
+  geometry::Pose T_c_reference = record.T_c_reference;
+  const map::KeyFrame* reference = record.reference;
+  while (reference->bad && reference->parent != nullptr) {
+    T_c_reference = T_c_reference * reference->T_c_parent;
+    reference = reference->parent;
+  }
+  return T_c_reference * reference->T_cw;
+}
+
+// The system dilates the mask once and shares it between extraction and point projection.
+feature::OrbExtractorOptions extractorOptions(feature::OrbExtractorOptions options) {
+  options.mask_dilation_px = 0;
+  return options;
+}
+
+}  // namespace
+
+SlamSystem::SlamSystem(const core::Camera& camera, SlamOptions options)
+    : options_(options),
+      camera_(std::make_shared<map::FrameCamera>(
+          camera, options.bf, options.close_depth_baselines,
+          feature::ScaleLevels(options.orb.num_levels, options.orb.scale_factor))),
+      extractor_(extractorOptions(options.orb)),
+      mapper_(map_, options.mapper),
+      tracker_(map_, mapper_, options.tracker) {
+  if (!options_.deterministic) mapper_.start();
+}
+
+SlamSystem::~SlamSystem() { finish(); }
+
+cv::Mat SlamSystem::dilatedMask(const cv::Mat& dynamic_mask) const {
+  if (dynamic_mask.empty() || cv::countNonZero(dynamic_mask) == 0) return {};
+  if (options_.mask_dilation_px <= 0) return dynamic_mask;
+  const int size = 2 * options_.mask_dilation_px + 1;
+  cv::Mat dilated;
+  cv::dilate(dynamic_mask, dilated,
+             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(size, size)));
+  return dilated;
+}
+
+FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const cv::Mat& depth_m,
+                                    const cv::Mat& dynamic_mask) {
+  const auto start = std::chrono::steady_clock::now();
+  FrameStats stats;
+  stats.frame_id = next_frame_id_++;
+  stats.timestamp = timestamp;
+  cv::Mat gray;
+  cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
+  const cv::Mat mask = dilatedMask(dynamic_mask);
+  std::vector<cv::KeyPoint> keypoints;
+  cv::Mat descriptors;
+  extractor_.extract(gray, mask, keypoints, descriptors);
+  stats.extraction_ms = millisecondsSince(start);
+  stats.keypoints = static_cast<int>(keypoints.size());
+  map::Frame frame(stats.frame_id, timestamp, std::move(keypoints), std::move(descriptors), depth_m,
+                   mask, camera_);
+  {
+    std::lock_guard lock(map_.mutex);
+    const auto result = tracker_.track(std::move(frame));
+    stats.state = result.state;
+    stats.matches = result.matches;
+    stats.keyframe = result.new_keyframe;
+  }
+  if (options_.deterministic) mapper_.processQueued();
+  stats.tracking_ms = millisecondsSince(start);
+  return stats;
+}
+
+void SlamSystem::finish() {
+  mapper_.finish();
+  mapper_.processQueued();
+}
+
+core::Trajectory SlamSystem::cameraTrajectory() const {
+  std::lock_guard lock(map_.mutex);
+  core::Trajectory trajectory;
+  for (const auto& record : tracker_.frameRecords()) {
+    trajectory.append(record.timestamp, resolvedPose(record).inverse());
+  }
+  return trajectory;
+}
+
+core::Trajectory SlamSystem::keyFrameTrajectory() const {
+  std::lock_guard lock(map_.mutex);
+  core::Trajectory trajectory;
+  for (const auto& keyframe : map_.keyFrames()) {
+    trajectory.append(keyframe->timestamp, keyframe->T_cw.inverse());
+  }
+  return trajectory;
+}
+
+std::size_t SlamSystem::numKeyFrames() const {
+  std::lock_guard lock(map_.mutex);
+  return map_.numKeyFrames();
+}
+
+std::size_t SlamSystem::numMapPoints() const {
+  std::lock_guard lock(map_.mutex);
+  return map_.numMapPoints();
+}
+
+}  // namespace segslam::system

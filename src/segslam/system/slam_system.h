@@ -1,0 +1,80 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "segslam/core/camera.h"
+#include "segslam/core/trajectory.h"
+#include "segslam/feature/orb_extractor.h"
+#include "segslam/map/map.h"
+#include "segslam/mapping/local_mapper.h"
+#include "segslam/tracking/tracker.h"
+
+namespace segslam::system {
+
+struct SlamOptions {
+  feature::OrbExtractorOptions orb;
+  tracking::TrackerOptions tracker;
+  mapping::LocalMapperOptions mapper;
+  // Virtual stereo baseline times fx (ORB-SLAM2's TUM setting) and the depth, in baselines,
+  // below which a keypoint's depth is trusted to create points (40 baselines ~ 3 m).
+  double bf = 40.0;
+  double close_depth_baselines = 40.0;
+  // Dilation (pixels) of the dynamic mask before keypoint extraction and point projection.
+  int mask_dilation_px = 10;
+  // Runs local mapping on the calling thread after each keyframe: slower, but every run with the
+  // same input gives the same result.
+  bool deterministic = false;
+};
+
+// Per-frame figures for the run log.
+struct FrameStats {
+  std::uint64_t frame_id = 0;
+  double timestamp = 0.0;
+  double extraction_ms = 0.0;
+  double tracking_ms = 0.0;  // extraction included: the time a frame costs the tracking thread
+  int keypoints = 0;
+  int matches = 0;
+  tracking::TrackingState state = tracking::TrackingState::kNotInitialised;
+  bool keyframe = false;
+};
+
+// The SLAM pipeline: ORB extraction on the static area, tracking on the calling thread, local
+// mapping on its own thread (or inline in deterministic mode).
+class SlamSystem {
+ public:
+  SlamSystem(const core::Camera& camera, SlamOptions options);
+  ~SlamSystem();
+  SlamSystem(const SlamSystem&) = delete;
+  SlamSystem& operator=(const SlamSystem&) = delete;
+
+  // bgr: CV_8UC3. depth_m: CV_32F metres. dynamic_mask: empty or CV_8U, non-zero = dynamic.
+  FrameStats processFrame(double timestamp, const cv::Mat& bgr, const cv::Mat& depth_m,
+                          const cv::Mat& dynamic_mask);
+  // Waits for local mapping to finish its queue; call before reading the trajectories.
+  void finish();
+
+  // Every tracked frame, placed relative to its reference keyframe's final pose.
+  [[nodiscard]] core::Trajectory cameraTrajectory() const;
+  [[nodiscard]] core::Trajectory keyFrameTrajectory() const;
+  [[nodiscard]] std::size_t numKeyFrames() const;
+  [[nodiscard]] std::size_t numMapPoints() const;
+  [[nodiscard]] double bundleAdjustmentSeconds() const {
+    return mapper_.totalBundleAdjustmentSeconds();
+  }
+
+ private:
+  cv::Mat dilatedMask(const cv::Mat& dynamic_mask) const;
+
+  SlamOptions options_;
+  std::shared_ptr<const map::FrameCamera> camera_;
+  feature::OrbExtractor extractor_;
+  map::Map map_;
+  mapping::LocalMapper mapper_;
+  tracking::Tracker tracker_;
+  std::uint64_t next_frame_id_ = 0;
+};
+
+}  // namespace segslam::system

@@ -1,0 +1,360 @@
+#include "segslam/tracking/tracker.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+#include "segslam/optim/pose_optimizer.h"
+#include "segslam/tracking/projection_search.h"
+#include "segslam/tracking/relocaliser.h"
+
+namespace segslam::tracking {
+
+namespace {
+
+constexpr int kMinPoseMatches = 10;
+constexpr double kMotionSearchRadius = 15.0;  // pixels at level 0, as ORB-SLAM2 for RGB-D
+constexpr double kLocalMapRadius = 3.0;
+constexpr double kLocalMapRadiusAfterRelocalisation = 5.0;
+
+// Indices of keypoints with depth, nearest first.
+std::vector<std::size_t> keypointsByDepth(const map::Frame& frame) {
+  std::vector<std::size_t> indices;
+  for (std::size_t i = 0; i < frame.size(); ++i) {
+    if (frame.depth[i] > 0.0f) indices.push_back(i);
+  }
+  std::stable_sort(indices.begin(), indices.end(),
+                   [&](std::size_t a, std::size_t b) { return frame.depth[a] < frame.depth[b]; });
+  return indices;
+}
+
+bool hasMapPoint(const map::Frame& frame, std::size_t i) {
+  const auto& p = frame.map_points[i];
+  return p && !p->bad && p->numObservations() > 0;
+}
+
+}  // namespace
+
+Tracker::Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options)
+    : map_(map), sink_(sink), options_(options) {}
+
+TrackingResult Tracker::track(map::Frame frame) {
+  last_ = std::move(current_);
+  current_ = std::move(frame);
+  TrackingResult result;
+  if (state_ == TrackingState::kNotInitialised) {
+    if (initialise()) state_ = TrackingState::kOk;
+    result.state = state_;
+    result.new_keyframe = state_ == TrackingState::kOk;
+    if (state_ == TrackingState::kOk) recordPose();
+    return result;
+  }
+
+  bool ok = false;
+  if (state_ == TrackingState::kOk) {
+    ok = (velocity_ && trackWithMotionModel()) || trackReferenceKeyFrame();
+  } else {
+    ok = relocalise();
+  }
+  if (ok) ok = trackLocalMap();
+
+  if (ok) {
+    state_ = TrackingState::kOk;
+    velocity_ = current_.T_cw * last_.T_cw.inverse();
+    if (needNewKeyFrame()) {
+      createKeyFrame();
+      result.new_keyframe = true;
+    }
+    dropTemporaryPoints();
+    recordPose();
+  } else {
+    state_ = TrackingState::kLost;
+    velocity_.reset();
+    current_.has_pose = false;
+    spdlog::debug("frame {}: tracking lost", current_.id);
+  }
+  result.state = state_;
+  result.matches = inliers_;
+  return result;
+}
+
+bool Tracker::initialise() {
+  if (static_cast<int>(keypointsByDepth(current_).size()) < options_.min_initial_points) {
+    spdlog::debug("frame {}: too few keypoints with depth to start the map", current_.id);
+    return false;
+  }
+  current_.T_cw = geometry::Pose::Identity();
+  current_.has_pose = true;
+  auto keyframe = map_.createKeyFrame(current_);
+  for (std::size_t i : keypointsByDepth(current_)) {
+    auto point = map_.createMapPoint(keyframe->unproject(i), keyframe.get());
+    point->addObservation(keyframe.get(), i);
+    keyframe->addMapPoint(point, i);
+    point->updateDescriptor();
+    point->updateNormalAndDepth();
+    current_.map_points[i] = point;
+  }
+  spdlog::info("map initialised with {} points", map_.numMapPoints());
+  reference_keyframe_ = keyframe;
+  last_keyframe_ = keyframe;
+  last_keyframe_frame_id_ = current_.id;
+  current_.reference_keyframe = keyframe;
+  local_keyframes_ = {keyframe};
+  local_points_ = map_.mapPoints();
+  sink_.insertKeyFrame(keyframe);
+  return true;
+}
+
+void Tracker::addVisualOdometryPoints() {
+  // RGB-D gives every keypoint of the last frame a 3D position: temporary points (not in the
+  // map) for its unmatched close keypoints make the motion-model search far more robust when
+  // the map is thin, as ORB-SLAM2 does.
+  const double close_depth = last_.camera->close_depth_m;
+  int added = 0;
+  for (std::size_t i : keypointsByDepth(last_)) {
+    if (hasMapPoint(last_, i)) continue;
+    if (last_.depth[i] > close_depth && added > options_.min_new_points_per_keyframe) break;
+    const Eigen::Vector3d position = last_.T_cw.inverse() * last_.unproject(i);
+    auto point = std::make_shared<map::MapPoint>(UINT64_MAX, position, nullptr);
+    point->descriptor = last_.descriptors.row(static_cast<int>(i)).clone();
+    last_.map_points[i] = point;
+    last_.outlier[i] = false;
+    temporary_points_.push_back(point);
+    ++added;
+  }
+}
+
+bool Tracker::trackWithMotionModel() {
+  addVisualOdometryPoints();
+  current_.T_cw = *velocity_ * last_.T_cw;
+  std::fill(current_.map_points.begin(), current_.map_points.end(), nullptr);
+  int matches = searchFromLastFrame(current_, last_, kMotionSearchRadius);
+  if (matches < 20) {
+    std::fill(current_.map_points.begin(), current_.map_points.end(), nullptr);
+    matches = searchFromLastFrame(current_, last_, 2.0 * kMotionSearchRadius);
+  }
+  if (matches < 20) return false;
+  return optimiseCurrentPose() >= kMinPoseMatches;
+}
+
+bool Tracker::trackReferenceKeyFrame() {
+  std::fill(current_.map_points.begin(), current_.map_points.end(), nullptr);
+  if (searchByDescriptors(current_, *reference_keyframe_, 0.7) < 15) return false;
+  current_.T_cw = last_.has_pose ? last_.T_cw : reference_keyframe_->T_cw;
+  return optimiseCurrentPose() >= kMinPoseMatches;
+}
+
+bool Tracker::relocalise() {
+  std::fill(current_.map_points.begin(), current_.map_points.end(), nullptr);
+  const auto pose = relocaliseAgainstKeyFrames(current_, map_.keyFrames());
+  if (!pose) return false;
+  current_.T_cw = *pose;
+  if (optimiseCurrentPose() < options_.min_inliers_after_relocalisation) return false;
+  last_relocalisation_frame_id_ = current_.id;
+  spdlog::info("frame {}: relocalised", current_.id);
+  return true;
+}
+
+int Tracker::optimiseCurrentPose() {
+  std::vector<optim::PoseObservation> observations;
+  std::vector<std::size_t> keypoint_of;
+  for (std::size_t i = 0; i < current_.size(); ++i) {
+    const auto& point = current_.map_points[i];
+    if (!point || point->bad) continue;
+    observations.push_back({point->position, current_.observation(i)});
+    keypoint_of.push_back(i);
+  }
+  if (observations.size() < static_cast<std::size_t>(kMinPoseMatches)) return 0;
+  const auto result = optim::optimizePose(current_.camera->stereo, current_.T_cw, observations);
+  current_.T_cw = result.T_cw;
+  current_.has_pose = true;
+  int inliers = 0;
+  for (std::size_t k = 0; k < keypoint_of.size(); ++k) {
+    const std::size_t i = keypoint_of[k];
+    if (result.inlier[k]) {
+      current_.outlier[i] = false;
+      ++inliers;
+    } else {
+      current_.map_points[i].reset();
+      current_.outlier[i] = false;
+    }
+  }
+  return inliers;
+}
+
+bool Tracker::trackLocalMap() {
+  updateLocalKeyFrames();
+  updateLocalPoints();
+  searchLocalMap();
+  optimiseCurrentPose();
+  inliers_ = 0;
+  for (std::size_t i = 0; i < current_.size(); ++i) {
+    const auto& point = current_.map_points[i];
+    if (!point || point->bad) continue;
+    point->increaseFound();
+    if (point->numObservations() > 0) ++inliers_;
+  }
+  const bool recently_relocalised =
+      last_relocalisation_frame_id_ > 0 &&
+      current_.id < last_relocalisation_frame_id_ + options_.max_frames_between_keyframes;
+  const int needed =
+      recently_relocalised ? options_.min_inliers_after_relocalisation : options_.min_inliers;
+  return inliers_ >= needed;
+}
+
+void Tracker::updateLocalKeyFrames() {
+  std::map<map::KeyFrame*, int, map::KeyFrameIdLess> votes;
+  for (const auto& point : current_.map_points) {
+    if (!point || point->bad) continue;
+    for (const auto& [keyframe, index] : point->observations()) ++votes[keyframe];
+  }
+  if (votes.empty()) return;
+  local_keyframes_.clear();
+  auto add = [&](map::KeyFrame* keyframe) {
+    if (keyframe == nullptr || keyframe->bad || keyframe->local_map_frame == current_.id) return;
+    keyframe->local_map_frame = current_.id;
+    local_keyframes_.push_back(keyframe->shared_from_this());
+  };
+  map::KeyFrame* best = nullptr;
+  int best_votes = 0;
+  for (const auto& [keyframe, count] : votes) {
+    if (keyframe->bad) continue;
+    add(keyframe);
+    if (count > best_votes) {
+      best_votes = count;
+      best = keyframe;
+    }
+  }
+  // Neighbours of the voted keyframes extend the local map to what the camera may see next.
+  const std::size_t voted = local_keyframes_.size();
+  for (std::size_t k = 0; k < voted; ++k) {
+    if (local_keyframes_.size() >= static_cast<std::size_t>(options_.max_local_keyframes)) break;
+    auto keyframe = local_keyframes_[k];
+    for (map::KeyFrame* neighbour : keyframe->bestCovisibles(10)) add(neighbour);
+    for (map::KeyFrame* child : keyframe->children) add(child);
+    add(keyframe->parent);
+  }
+  if (best) {
+    reference_keyframe_ = best->shared_from_this();
+    current_.reference_keyframe = reference_keyframe_;
+  }
+}
+
+void Tracker::updateLocalPoints() {
+  local_points_.clear();
+  for (const auto& keyframe : local_keyframes_) {
+    for (const auto& [index, point] : keyframe->validMapPoints()) {
+      if (point->track_reference_frame == current_.id) continue;
+      point->track_reference_frame = current_.id;
+      local_points_.push_back(point);
+    }
+  }
+}
+
+int Tracker::searchLocalMap() {
+  for (const auto& point : current_.map_points) {
+    if (!point || point->bad) continue;
+    point->increaseVisible();
+    point->last_seen_frame = current_.id;
+  }
+  std::vector<ProjectedPoint> projections;
+  for (const auto& point : local_points_) {
+    if (point->bad || point->last_seen_frame == current_.id) continue;
+    auto projected = projectIntoFrame(point, current_, 0.5);
+    if (!projected) continue;
+    point->increaseVisible();
+    projections.push_back(std::move(*projected));
+  }
+  if (projections.empty()) return 0;
+  const bool recently_relocalised =
+      last_relocalisation_frame_id_ > 0 && current_.id < last_relocalisation_frame_id_ + 2;
+  return searchLocalPoints(
+      current_, projections,
+      recently_relocalised ? kLocalMapRadiusAfterRelocalisation : kLocalMapRadius);
+}
+
+bool Tracker::needNewKeyFrame() const {
+  const std::uint64_t since_last = current_.id - last_keyframe_frame_id_;
+  // Points count as established once several keyframes see them; the first keyframes' points
+  // are seen only by those keyframes, so the bar is lower while the map is that young.
+  const std::size_t keyframes = map_.numKeyFrames();
+  const int min_observations = keyframes <= 2 ? 1 : 2;
+  const int reference_tracked = reference_keyframe_->trackedMapPoints(min_observations);
+  int tracked_close = 0;
+  int untracked_close = 0;
+  for (std::size_t i = 0; i < current_.size(); ++i) {
+    if (current_.depth[i] <= 0.0f || current_.depth[i] >= current_.camera->close_depth_m) {
+      continue;
+    }
+    if (hasMapPoint(current_, i)) {
+      ++tracked_close;
+    } else {
+      ++untracked_close;
+    }
+  }
+  const bool need_close = tracked_close < options_.min_close_points_tracked &&
+                          untracked_close > options_.min_close_points_untracked;
+  const bool timeout =
+      since_last >= static_cast<std::uint64_t>(options_.max_frames_between_keyframes);
+  const bool mapping_idle = sink_.isIdle();
+  const bool weak = inliers_ < 0.25 * reference_tracked || need_close;
+  const bool below_ratio =
+      inliers_ < options_.keyframe_tracked_ratio * reference_tracked || need_close;
+  if (!((timeout || mapping_idle || weak) && below_ratio && inliers_ > 15)) return false;
+  // A busy mapper would only queue the keyframe; a short queue is fine for RGB-D.
+  return mapping_idle || sink_.queuedKeyFrames() < 3;
+}
+
+void Tracker::createKeyFrame() {
+  auto keyframe = map_.createKeyFrame(current_);
+  for (std::size_t i = 0; i < current_.size(); ++i) {
+    if (!hasMapPoint(current_, i)) continue;
+    keyframe->addMapPoint(current_.map_points[i], i);
+    current_.map_points[i]->addObservation(keyframe.get(), i);
+  }
+  addNewMapPoints(*keyframe);
+  reference_keyframe_ = keyframe;
+  current_.reference_keyframe = keyframe;
+  last_keyframe_ = keyframe;
+  last_keyframe_frame_id_ = current_.id;
+  sink_.insertKeyFrame(keyframe);
+}
+
+void Tracker::addNewMapPoints(map::KeyFrame& keyframe) {
+  const double close_depth = current_.camera->close_depth_m;
+  int created_or_tracked = 0;
+  for (std::size_t i : keypointsByDepth(current_)) {
+    if (hasMapPoint(current_, i)) {
+      ++created_or_tracked;
+    } else {
+      auto point = map_.createMapPoint(keyframe.unproject(i), &keyframe);
+      point->addObservation(&keyframe, i);
+      keyframe.addMapPoint(point, i);
+      point->updateDescriptor();
+      point->updateNormalAndDepth();
+      current_.map_points[i] = point;
+      ++created_or_tracked;
+    }
+    if (current_.depth[i] > close_depth &&
+        created_or_tracked > options_.min_new_points_per_keyframe) {
+      break;
+    }
+  }
+}
+
+void Tracker::dropTemporaryPoints() {
+  for (auto& point : current_.map_points) {
+    if (point && point->numObservations() == 0) point.reset();
+  }
+  temporary_points_.clear();
+}
+
+void Tracker::recordPose() {
+  const auto& reference = current_.reference_keyframe;
+  records_.push_back(
+      {current_.timestamp, reference.get(), current_.T_cw * reference->T_cw.inverse()});
+}
+
+}  // namespace segslam::tracking

@@ -1,0 +1,91 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "segslam/map/frame.h"
+#include "segslam/map/map.h"
+#include "segslam/tracking/keyframe_sink.h"
+
+namespace segslam::tracking {
+
+struct TrackerOptions {
+  int min_initial_points = 500;           // keypoints with depth needed to start the map
+  int max_frames_between_keyframes = 30;  // one second at 30 Hz
+  double keyframe_tracked_ratio = 0.75;   // new keyframe when tracking falls below this share
+  int min_close_points_tracked = 100;     // ... or when too few close (depth-trusted) points
+  int min_close_points_untracked = 70;    // ... while this many close points are new
+  int min_new_points_per_keyframe = 100;
+  int max_local_keyframes = 80;
+  int min_inliers = 30;
+  int min_inliers_after_relocalisation = 50;
+};
+
+enum class TrackingState { kNotInitialised, kOk, kLost };
+
+struct TrackingResult {
+  TrackingState state = TrackingState::kNotInitialised;
+  int matches = 0;  // map points used for the pose (inliers)
+  bool new_keyframe = false;
+};
+
+// Estimates each frame's pose against the map: constant-velocity prediction with projection
+// search, falling back to descriptor matching against the reference keyframe, then to
+// relocalisation; refines against the local map; decides when a keyframe is needed and
+// creates map points from its depth. The caller holds map.mutex around track().
+class Tracker {
+ public:
+  Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options = {});
+
+  TrackingResult track(map::Frame frame);
+
+  [[nodiscard]] TrackingState state() const { return state_; }
+  [[nodiscard]] const map::Frame& currentFrame() const { return current_; }
+
+  // A tracked frame's pose relative to its reference keyframe: resolving it against the
+  // keyframe's final (optimised) pose gives the frame's final pose.
+  struct FramePoseRecord {
+    double timestamp;
+    map::KeyFrame* reference;
+    geometry::Pose T_c_reference;
+  };
+  [[nodiscard]] const std::vector<FramePoseRecord>& frameRecords() const { return records_; }
+
+ private:
+  bool initialise();
+  bool trackWithMotionModel();
+  bool trackReferenceKeyFrame();
+  bool relocalise();
+  bool trackLocalMap();
+  void addVisualOdometryPoints();
+  int optimiseCurrentPose();
+  void updateLocalKeyFrames();
+  void updateLocalPoints();
+  int searchLocalMap();
+  bool needNewKeyFrame() const;
+  void createKeyFrame();
+  void addNewMapPoints(map::KeyFrame& keyframe);
+  void dropTemporaryPoints();
+  void recordPose();
+
+  map::Map& map_;
+  KeyFrameSink& sink_;
+  TrackerOptions options_;
+  TrackingState state_ = TrackingState::kNotInitialised;
+  map::Frame current_;
+  map::Frame last_;
+  std::optional<geometry::Pose> velocity_;
+  std::shared_ptr<map::KeyFrame> reference_keyframe_;
+  std::shared_ptr<map::KeyFrame> last_keyframe_;
+  std::uint64_t last_keyframe_frame_id_ = 0;
+  std::uint64_t last_relocalisation_frame_id_ = 0;
+  std::vector<std::shared_ptr<map::KeyFrame>> local_keyframes_;
+  std::vector<std::shared_ptr<map::MapPoint>> local_points_;
+  std::vector<std::shared_ptr<map::MapPoint>> temporary_points_;
+  int inliers_ = 0;
+  std::vector<FramePoseRecord> records_;
+};
+
+}  // namespace segslam::tracking
