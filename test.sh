@@ -6,7 +6,10 @@ set -euo pipefail
 cd "$(dirname "$0")"
 scripts/install_deps.sh
 if [ "${1:-}" = "--sanitize" ]; then
-  scripts/build.sh build-asan -DSEGSLAM_SANITIZE=ON -DSEGSLAM_BUILD_BENCH=OFF
+  # GCC 12's flow-based warnings (maybe-uninitialized inside std::regex and std::function, among
+  # others) give false positives on ASan-instrumented code, so this build does not turn warnings
+  # into errors; the plain build above keeps -Werror for the same sources.
+  scripts/build.sh build-asan -DSEGSLAM_SANITIZE=ON -DSEGSLAM_BUILD_BENCH=OFF -DSEGSLAM_WERROR=OFF
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   ctest --test-dir build-asan --output-on-failure -j"$(nproc)"
 else

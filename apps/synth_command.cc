@@ -34,9 +34,9 @@ void addOptions(CLI::App& command, SynthArguments& args) {
   command.add_option("--people", o.people, "Number of walking people (0 = static scene)")
       ->check(CLI::Range(0, synth::kSynthMaxPeople))
       ->capture_default_str();
-  command.add_option("--person-speed", o.person_speed, "Walking speed in m/s (0 = standing)")
+  command.add_option("--person-speed", o.person_speed, "Walking speed in m/s, 0-3 (0 = standing)")
       ->capture_default_str();
-  command.add_option("--person-size", o.person_size, "Scale of a 1.75 m tall person")
+  command.add_option("--person-size", o.person_size, "Scale of a 1.75 m tall person, 0.5-1.4")
       ->capture_default_str();
   command.add_flag("--moved-furniture", o.moved_furniture,
                    "Push a chair 0.55 m across the floor during 30-55 % of the sequence");

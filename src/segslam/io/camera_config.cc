@@ -8,7 +8,6 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <string_view>
 #include <system_error>
 
@@ -148,9 +147,20 @@ std::optional<std::string> presetNameForDataset(const std::filesystem::path& dat
   std::string name = folder.filename().string();
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  static const std::regex kPattern(R"((?:^|[^a-z0-9])(?:freiburg|fr)([123])(?:[^0-9]|$))");
-  std::smatch match;
-  if (std::regex_search(name, match, kPattern)) return "freiburg" + match[1].str();
+  // A "freiburg<N>" or "fr<N>" token (N in 1..3) that starts the name or follows a
+  // non-alphanumeric character and is not followed by another digit.
+  const auto is_alnum = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+  const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+  for (const std::string_view prefix : {std::string_view("freiburg"), std::string_view("fr")}) {
+    for (std::size_t at = name.find(prefix); at != std::string::npos;
+         at = name.find(prefix, at + 1)) {
+      const std::size_t digit = at + prefix.size();
+      if (at > 0 && is_alnum(name[at - 1])) continue;
+      if (digit >= name.size() || name[digit] < '1' || name[digit] > '3') continue;
+      if (digit + 1 < name.size() && is_digit(name[digit + 1])) continue;
+      return "freiburg" + std::string(1, name[digit]);
+    }
+  }
   return std::nullopt;
 }
 
