@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "commands.h"
+#include "dataset_arguments.h"
 #include "segslam/io/camera_config.h"
 #include "segslam/io/tum_dataset.h"
 #include "segslam/system/dataset_check.h"
@@ -16,19 +17,9 @@ namespace segslam::apps {
 
 namespace {
 
-struct CheckOptions {
-  std::filesystem::path dataset;
-  std::filesystem::path out_dir;
-  std::string camera_file;
-  std::string camera_preset;
-  double max_time_difference = 0.02;
+struct CheckOptions : DatasetArguments {
   std::size_t max_frames = std::numeric_limits<std::size_t>::max();
 };
-
-std::filesystem::path defaultOutDir(const std::filesystem::path& dataset) {
-  const auto name = std::filesystem::weakly_canonical(dataset).filename().string();
-  return std::filesystem::path("out") / ("check_" + (name.empty() ? "dataset" : name));
-}
 
 void writeJson(const std::filesystem::path& file, const nlohmann::json& json) {
   std::ofstream out(file);
@@ -66,11 +57,7 @@ void printSummary(const CheckOptions& options, const io::TumDataset& dataset,
 }
 
 void checkCommand(const CheckOptions& options) {
-  io::DatasetOptions dataset_options;
-  dataset_options.max_time_difference = options.max_time_difference;
-  if (!options.camera_file.empty()) dataset_options.camera_file = options.camera_file;
-  if (!options.camera_preset.empty()) dataset_options.camera_preset = options.camera_preset;
-  const auto dataset = io::TumDataset::open(options.dataset, dataset_options);
+  const auto dataset = openDataset(options);
 
   std::filesystem::create_directories(options.out_dir);
   util::addLogFile(options.out_dir / "check.log");
@@ -94,23 +81,11 @@ void registerCheckCommand(CLI::App& app) {
   auto* check = app.add_subcommand(
       "check",
       "Validate an RGB-D sequence in the TUM layout: load every frame and report statistics");
-  check->add_option("-d,--dataset", options->dataset, "Dataset folder (rgb.txt, depth.txt, ...)")
-      ->required()
-      ->check(CLI::ExistingDirectory);
-  check->add_option("-o,--out", options->out_dir,
-                    "Output folder (default: out/check_<dataset name>)");
-  check->add_option("--camera", options->camera_file, "Camera settings YAML (overrides presets)");
-  check->add_option("--camera-preset", options->camera_preset, "Camera preset")
-      ->check(CLI::IsMember(io::cameraPresetNames()));
-  check
-      ->add_option("--max-time-diff", options->max_time_difference,
-                   "Max colour/depth timestamp difference for association (s)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  addDatasetOptions(*check, *options);
   check->add_option("--max-frames", options->max_frames, "Process at most this many frames")
       ->check(CLI::PositiveNumber);
   check->callback([options] {
-    if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset);
+    if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset, "check");
     checkCommand(*options);
   });
 }

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "commands.h"
+#include "dataset_arguments.h"
 #include "segslam/io/camera_config.h"
 #include "segslam/io/tum_dataset.h"
 #include "segslam/system/sequence_runner.h"
@@ -14,20 +15,10 @@ namespace segslam::apps {
 
 namespace {
 
-struct RunOptions {
-  std::filesystem::path dataset;
-  std::filesystem::path out_dir;
-  std::string camera_file;
-  std::string camera_preset;
-  double max_time_difference = 0.02;
+struct RunOptions : DatasetArguments {
   std::string masks = "none";
   system::SequenceRunOptions run;
 };
-
-std::filesystem::path defaultOutDir(const std::filesystem::path& dataset) {
-  const auto name = std::filesystem::weakly_canonical(dataset).filename().string();
-  return std::filesystem::path("out") / ("run_" + (name.empty() ? "dataset" : name));
-}
 
 void printSummary(const RunOptions& options, const system::SequenceRunSummary& s) {
   fmt::print("\nsegslam run: {} (masks: {})\n", options.dataset.string(), options.masks);
@@ -54,11 +45,7 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
 }
 
 void runCommand(RunOptions& options) {
-  io::DatasetOptions dataset_options;
-  dataset_options.max_time_difference = options.max_time_difference;
-  if (!options.camera_file.empty()) dataset_options.camera_file = options.camera_file;
-  if (!options.camera_preset.empty()) dataset_options.camera_preset = options.camera_preset;
-  const auto dataset = io::TumDataset::open(options.dataset, dataset_options);
+  const auto dataset = openDataset(options);
   options.run.masks = system::maskSourceFromName(options.masks);
 
   std::filesystem::create_directories(options.out_dir);
@@ -79,17 +66,7 @@ void runCommand(RunOptions& options) {
 void registerRunCommand(CLI::App& app) {
   auto options = std::make_shared<RunOptions>();
   auto* run = app.add_subcommand("run", "Run SLAM on an RGB-D sequence in the TUM layout");
-  run->add_option("-d,--dataset", options->dataset, "Dataset folder (rgb.txt, depth.txt, ...)")
-      ->required()
-      ->check(CLI::ExistingDirectory);
-  run->add_option("-o,--out", options->out_dir, "Output folder (default: out/run_<dataset name>)");
-  run->add_option("--camera", options->camera_file, "Camera settings YAML (overrides presets)");
-  run->add_option("--camera-preset", options->camera_preset, "Camera preset")
-      ->check(CLI::IsMember(io::cameraPresetNames()));
-  run->add_option("--max-time-diff", options->max_time_difference,
-                  "Max colour/depth timestamp difference for association (s)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  addDatasetOptions(*run, *options);
   run->add_option("--seg", options->masks,
                   "Dynamic masks: none, or oracle (the dataset's ground-truth mask.txt)")
       ->capture_default_str()
@@ -108,7 +85,7 @@ void registerRunCommand(CLI::App& app) {
   run->add_option("--max-frames", options->run.max_frames, "Process at most this many frames")
       ->check(CLI::PositiveNumber);
   run->callback([options] {
-    if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset);
+    if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset, "run");
     runCommand(*options);
   });
 }

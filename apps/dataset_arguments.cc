@@ -1,0 +1,37 @@
+#include "dataset_arguments.h"
+
+#include "segslam/io/camera_config.h"
+
+namespace segslam::apps {
+
+void addDatasetOptions(CLI::App& command, DatasetArguments& arguments) {
+  command.add_option("-d,--dataset", arguments.dataset, "Dataset folder (rgb.txt, depth.txt, ...)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  command.add_option("-o,--out", arguments.out_dir,
+                     "Output folder (default: out/" + command.get_name() + "_<dataset name>)");
+  command.add_option("--camera", arguments.camera_file, "Camera settings YAML (overrides presets)");
+  command.add_option("--camera-preset", arguments.camera_preset, "Camera preset")
+      ->check(CLI::IsMember(io::cameraPresetNames()));
+  command
+      .add_option("--max-time-diff", arguments.max_time_difference,
+                  "Max colour/depth timestamp difference for association (s)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+}
+
+io::TumDataset openDataset(const DatasetArguments& arguments) {
+  io::DatasetOptions options;
+  options.max_time_difference = arguments.max_time_difference;
+  if (!arguments.camera_file.empty()) options.camera_file = arguments.camera_file;
+  if (!arguments.camera_preset.empty()) options.camera_preset = arguments.camera_preset;
+  return io::TumDataset::open(arguments.dataset, options);
+}
+
+std::filesystem::path defaultOutDir(const std::filesystem::path& dataset,
+                                    const std::string& prefix) {
+  const auto name = std::filesystem::weakly_canonical(dataset).filename().string();
+  return std::filesystem::path("out") / (prefix + "_" + (name.empty() ? "dataset" : name));
+}
+
+}  // namespace segslam::apps
