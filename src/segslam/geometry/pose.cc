@@ -12,6 +12,12 @@ Pose poseFromTranslationQuaternion(const Eigen::Vector3d& t, const Eigen::Quater
   return pose;
 }
 
+Pose orthonormalised(const Pose& pose) {
+  Pose result = pose;
+  result.linear() = Eigen::Quaterniond(pose.linear()).normalized().toRotationMatrix();
+  return result;
+}
+
 double rotationAngle(const Pose& pose) {
   const double c = (pose.linear().trace() - 1.0) / 2.0;
   return std::acos(std::clamp(c, -1.0, 1.0));

@@ -103,7 +103,7 @@ class PoseProblem {
       damped.diagonal() += lambda * (current.hessian.diagonal().array() + 1e-9).matrix();
       const Vector6d step = damped.ldlt().solve(-current.gradient);
       if (!step.allFinite() || isNegligible(step, current)) return;
-      const geometry::Pose candidate = expSe3(step) * T_cw;
+      const geometry::Pose candidate = geometry::orthonormalised(expSe3(step) * T_cw);
       Linearisation next = linearise(candidate, active, robust);
       if (next.valid && next.cost < current.cost) {
         T_cw = candidate;

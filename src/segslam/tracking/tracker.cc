@@ -62,7 +62,7 @@ TrackingResult Tracker::track(map::Frame frame) {
 
   if (ok) {
     state_ = TrackingState::kOk;
-    velocity_ = current_.T_cw * last_.T_cw.inverse();
+    velocity_ = geometry::orthonormalised(current_.T_cw * last_.T_cw.inverse());
     if (needNewKeyFrame()) {
       createKeyFrame();
       result.new_keyframe = true;
@@ -128,7 +128,7 @@ void Tracker::addVisualOdometryPoints() {
 
 bool Tracker::trackWithMotionModel() {
   addVisualOdometryPoints();
-  current_.T_cw = *velocity_ * last_.T_cw;
+  current_.T_cw = geometry::orthonormalised(*velocity_ * last_.T_cw);
   std::fill(current_.map_points.begin(), current_.map_points.end(), nullptr);
   int matches = searchFromLastFrame(current_, last_, kMotionSearchRadius);
   if (matches < 20) {
