@@ -1,6 +1,7 @@
 #include "segslam/geometry/pose.h"
 
 #include <algorithm>
+#include <Eigen/SVD>
 #include <cmath>
 
 namespace segslam::geometry {
@@ -13,8 +14,17 @@ Pose poseFromTranslationQuaternion(const Eigen::Vector3d& t, const Eigen::Quater
 }
 
 Pose orthonormalised(const Pose& pose) {
+  // The nearest rotation in the Frobenius norm: U V^T of the block's SVD.
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(pose.linear(),
+                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d rotation = svd.matrixU() * svd.matrixV().transpose();
+  if (rotation.determinant() < 0.0) {
+    Eigen::Matrix3d u = svd.matrixU();
+    u.col(2) = -u.col(2);
+    rotation = u * svd.matrixV().transpose();
+  }
   Pose result = pose;
-  result.linear() = Eigen::Quaterniond(pose.linear()).normalized().toRotationMatrix();
+  result.linear() = rotation;
   return result;
 }
 
