@@ -12,14 +12,15 @@ constexpr int kFastRadius = 3;
 
 // In float, exactly as the extractor scales the keypoints it reports, so that the mask is asked
 // about the very pixel a reported keypoint rounds to.
-cv::Point toLevel0(const cv::Point2f& level_point, float scale) {
-  return {cvRound(level_point.x * scale), cvRound(level_point.y * scale)};
+cv::Point toLevel0(const cv::Point2f& level_point, const LevelToBase& to_base) {
+  const cv::Point2f base = to_base(level_point);
+  return {cvRound(base.x), cvRound(base.y)};
 }
 
 // The level-0 pixels that the pixels of a level rectangle map to, first to last.
-cv::Rect toLevel0(const cv::Rect& level_rect, float scale) {
-  const cv::Point first = toLevel0(cv::Point2f(level_rect.tl()), scale);
-  const cv::Point last = toLevel0(cv::Point2f(level_rect.br() - cv::Point(1, 1)), scale);
+cv::Rect toLevel0(const cv::Rect& level_rect, const LevelToBase& to_base) {
+  const cv::Point first = toLevel0(cv::Point2f(level_rect.tl()), to_base);
+  const cv::Point last = toLevel0(cv::Point2f(level_rect.br() - cv::Point(1, 1)), to_base);
   return {first, last + cv::Point(1, 1)};
 }
 
@@ -73,9 +74,9 @@ class CellGrid {
 
 class GridDetector {
  public:
-  GridDetector(const cv::Mat& image, double scale, const StaticMask& mask,
+  GridDetector(const cv::Mat& image, const LevelToBase& to_base, const StaticMask& mask,
                const FastGridOptions& options)
-      : image_(image), scale_(static_cast<float>(scale)), mask_(mask), options_(options) {}
+      : image_(image), to_base_(to_base), mask_(mask), options_(options) {}
 
   std::vector<cv::KeyPoint> detect(const cv::Rect& region) {
     const CellGrid grid(region, options_.cell_size);
@@ -131,7 +132,7 @@ class GridDetector {
   // has none but could have some at the lower threshold.
   bool addStrongCorners(const CellGrid& grid, int row, int column,
                         std::vector<cv::KeyPoint>& corners) const {
-    const cv::Rect cell0 = toLevel0(grid.span(row, column, column + 1), scale_);
+    const cv::Rect cell0 = toLevel0(grid.span(row, column, column + 1), to_base_);
     if (mask_.isDynamicRect(cell0)) return true;
     const int index = row * grid.columns() + column;
     const std::size_t before = corners.size();
@@ -142,7 +143,7 @@ class GridDetector {
 
   void addFallbackCorners(const cv::Rect& cells, std::vector<cv::KeyPoint>& corners) {
     fast(cells, options_.min_threshold, fallback_);
-    appendStatic(fallback_.begin(), fallback_.end(), !mask_.isStaticRect(toLevel0(cells, scale_)),
+    appendStatic(fallback_.begin(), fallback_.end(), !mask_.isStaticRect(toLevel0(cells, to_base_)),
                  corners);
   }
 
@@ -150,12 +151,12 @@ class GridDetector {
                     std::vector<cv::KeyPoint>::const_iterator end, bool needs_check,
                     std::vector<cv::KeyPoint>& corners) const {
     for (auto corner = begin; corner != end; ++corner) {
-      if (!needs_check || mask_.isStatic(toLevel0(corner->pt, scale_))) corners.push_back(*corner);
+      if (!needs_check || mask_.isStatic(toLevel0(corner->pt, to_base_))) corners.push_back(*corner);
     }
   }
 
   const cv::Mat& image_;
-  float scale_;
+  LevelToBase to_base_;
   const StaticMask& mask_;
   const FastGridOptions& options_;
   std::vector<cv::KeyPoint> found_;
@@ -174,13 +175,14 @@ cv::Rect detectionRegion(cv::Size level_size, int border) {
   return {border, border, width, height};
 }
 
-std::vector<cv::KeyPoint> detectFastInGrid(const cv::Mat& level_image, double scale,
+std::vector<cv::KeyPoint> detectFastInGrid(const cv::Mat& level_image,
+                                           const LevelToBase& to_base,
                                            const StaticMask& static_mask,
                                            const FastGridOptions& options) {
   const cv::Rect region =
       detectionRegion(level_image.size(), std::max(options.border, kFastRadius));
   if (region.empty()) return {};
-  return GridDetector(level_image, scale, static_mask, options).detect(region);
+  return GridDetector(level_image, to_base, static_mask, options).detect(region);
 }
 
 }  // namespace segslam::feature

@@ -20,12 +20,12 @@ TEST(FeatureFastGrid, FallsBackToTheLowThresholdInLowContrastCells) {
   cv::Mat image = testing::texturedImage({320, 240}, 11);
   testing::texturedImage({160, 240}, 12, 450, 16).copyTo(image(cv::Rect(160, 0, 160, 240)));
   FastGridOptions options;
-  const auto corners = detectFastInGrid(image, 1.0, StaticMask(), options);
+  const auto corners = detectFastInGrid(image, LevelToBase{}, StaticMask(), options);
   EXPECT_GT(countInColumns(corners, 0, 150), 50);
   EXPECT_GT(countInColumns(corners, 170, 320), 20);
 
   options.min_threshold = options.initial_threshold;  // no fallback: the faint side stays empty
-  const auto strong_only = detectFastInGrid(image, 1.0, StaticMask(), options);
+  const auto strong_only = detectFastInGrid(image, LevelToBase{}, StaticMask(), options);
   EXPECT_LT(countInColumns(strong_only, 170, 320), 5);
 }
 
@@ -35,16 +35,18 @@ TEST(FeatureFastGrid, KeepsBorderAndMaskAtLevelScale) {
   dynamic(cv::Rect(0, 0, 200, 300)).setTo(255);
   const StaticMask mask(dynamic, 10);
   FastGridOptions options;
-  const auto corners = detectFastInGrid(image, 2.0, mask, options);
+  const LevelToBase to_base{2.0f, 2.0f};
+  const auto corners = detectFastInGrid(image, to_base, mask, options);
   ASSERT_FALSE(corners.empty());
   for (const auto& corner : corners) {
-    EXPECT_GT(corner.pt.x * 2.0f, 209.0f);  // more than 10 px right of the masked half
-    EXPECT_TRUE(mask.isStatic(cv::Point(cvRound(corner.pt.x * 2), cvRound(corner.pt.y * 2))));
+    const cv::Point2f base = to_base(corner.pt);
+    EXPECT_GT(base.x, 209.0f);  // more than 10 px right of the masked half
+    EXPECT_TRUE(mask.isStatic(cv::Point(cvRound(base.x), cvRound(base.y))));
     EXPECT_GE(corner.pt.y, options.border);
     EXPECT_LT(corner.pt.x, image.cols - options.border);
     EXPECT_GT(corner.response, 0.0f);
   }
-  EXPECT_TRUE(detectFastInGrid(cv::Mat(20, 20, CV_8UC1, cv::Scalar(0)), 1.0, StaticMask(), options)
+  EXPECT_TRUE(detectFastInGrid(cv::Mat(20, 20, CV_8UC1, cv::Scalar(0)), LevelToBase{}, StaticMask(), options)
                   .empty());
 }
 

@@ -14,6 +14,11 @@ cv::Size pyramidLevelSize(cv::Size size, double scale) {
   return {shrink(size.width), shrink(size.height)};
 }
 
+LevelToBase LevelToBase::between(cv::Size base, cv::Size level) {
+  return {static_cast<float>(base.width) / static_cast<float>(level.width),
+          static_cast<float>(base.height) / static_cast<float>(level.height)};
+}
+
 void buildImagePyramid(const cv::Mat& gray, const ScaleLevels& scale_levels,
                        std::vector<cv::Mat>& levels) {
   const int num_levels = scale_levels.numLevels();

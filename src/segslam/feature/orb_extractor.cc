@@ -116,7 +116,9 @@ void OrbExtractor::run(const cv::Mat& gray, const cv::Mat& dynamic_mask,
   std::vector<std::vector<cv::KeyPoint>> level_keypoints(numLevels());
   forEachLevel([&](int level) {
     level_keypoints[level] =
-        detectFastInGrid(pyramid_[level], scaleFactors()[level], static_mask, grid);
+        detectFastInGrid(pyramid_[level],
+                         LevelToBase::between(pyramid_[0].size(), pyramid_[level].size()),
+                         static_mask, grid);
   });
 
   std::vector<int> capacities;
@@ -149,6 +151,7 @@ void OrbExtractor::orientAndDescribe(int level, std::vector<cv::KeyPoint>& level
     *descriptors = cv::Mat(static_cast<int>(level_keypoints.size()), kDescriptorBytes, CV_8UC1);
   }
   const auto scale = static_cast<float>(scaleFactors()[level]);
+  const LevelToBase to_base = LevelToBase::between(pyramid_[0].size(), image.size());
   for (std::size_t i = 0; i < level_keypoints.size(); ++i) {
     cv::KeyPoint& keypoint = level_keypoints[i];
     const cv::Point center(cvRound(keypoint.pt.x), cvRound(keypoint.pt.y));
@@ -157,7 +160,7 @@ void OrbExtractor::orientAndDescribe(int level, std::vector<cv::KeyPoint>& level
       brief_.compute(smoothed_[level], center, keypoint.angle,
                      descriptors->ptr<std::uint8_t>(static_cast<int>(i)));
     }
-    keypoint.pt *= scale;
+    keypoint.pt = to_base(keypoint.pt);
     keypoint.octave = level;
     keypoint.size = kPatchDiameter * scale;
   }

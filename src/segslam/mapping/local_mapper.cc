@@ -2,8 +2,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <set>
+#include <cstdlib>
 
 #include "segslam/mapping/point_fusion.h"
 #include "segslam/optim/bundle_adjuster.h"
@@ -14,6 +16,7 @@ namespace {
 
 constexpr int kMinObservationsOfRecentPoint = 3;  // RGB-D: a point must be seen from 3 keyframes
 constexpr double kMinFoundRatio = 0.25;
+int envInt(const char* n, int d) { return std::getenv(n) ? std::atoi(std::getenv(n)) : d; }
 
 // Keyframes and points of one local bundle adjustment, with the indices the solver uses.
 struct LocalWindow {
@@ -23,12 +26,13 @@ struct LocalWindow {
   std::vector<std::pair<map::KeyFrame*, map::MapPoint*>> observation_owners;
 };
 
-LocalWindow collectLocalWindow(map::KeyFrame& keyframe) {
+LocalWindow collectLocalWindow(map::KeyFrame& keyframe, std::size_t max_keyframes) {
   LocalWindow window;
   const std::uint64_t tag = keyframe.id;
   keyframe.ba_local_keyframe = tag;
   std::vector<map::KeyFrame*> local = {&keyframe};
   for (map::KeyFrame* neighbour : keyframe.covisiblesWithWeight(0)) {
+    if (local.size() >= max_keyframes) break;
     if (neighbour->bad) continue;
     neighbour->ba_local_keyframe = tag;
     local.push_back(neighbour);
@@ -81,7 +85,7 @@ void buildProblem(LocalWindow& window) {
 }  // namespace
 
 LocalMapper::LocalMapper(map::Map& map, LocalMapperOptions options)
-    : map_(map), options_(options) {}
+    : map_(map), options_(options) { options_.ba_max_keyframes = envInt("BAK", options_.ba_max_keyframes); }
 
 LocalMapper::~LocalMapper() { finish(); }
 
@@ -216,7 +220,7 @@ void LocalMapper::localBundleAdjustment(map::KeyFrame& keyframe) {
   {
     std::lock_guard lock(map_.mutex);
     if (keyframe.bad) return;
-    window = collectLocalWindow(keyframe);
+    window = collectLocalWindow(keyframe, static_cast<std::size_t>(options_.ba_max_keyframes));
     buildProblem(window);
   }
   const auto start = std::chrono::steady_clock::now();
@@ -224,7 +228,16 @@ void LocalMapper::localBundleAdjustment(map::KeyFrame& keyframe) {
   ba_options.iterations_first = options_.ba_first_iterations;
   ba_options.iterations_second = options_.ba_second_iterations;
   const auto result = optim::bundleAdjust(window.problem, ba_options);
-  ba_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ba_seconds_ += seconds;
+  spdlog::debug("local BA at keyframe {}: {} keyframes ({} fixed), {} points, {} observations, "
+                "{} iterations, {:.0f} ms",
+                keyframe.id, window.problem.keyframes.size(),
+                std::count_if(window.problem.keyframes.begin(), window.problem.keyframes.end(),
+                              [](const optim::BaKeyFrame& k) { return k.fixed; }),
+                window.problem.points.size(), window.problem.observations.size(),
+                result.iterations, 1000.0 * seconds);
 
   std::lock_guard lock(map_.mutex);
   for (std::size_t k = 0; k < window.keyframes.size(); ++k) {

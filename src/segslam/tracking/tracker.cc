@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <cstdlib>
 
 #include "segslam/optim/pose_optimizer.h"
 #include "segslam/tracking/projection_search.h"
@@ -280,7 +281,7 @@ bool Tracker::needNewKeyFrame() const {
   // Points count as established once several keyframes see them; the first keyframes' points
   // are seen only by those keyframes, so the bar is lower while the map is that young.
   const std::size_t keyframes = map_.numKeyFrames();
-  const int min_observations = keyframes <= 2 ? 1 : 2;
+  const int min_observations = keyframes <= 2 ? 2 : (std::getenv("MINOBS") ? std::atoi(std::getenv("MINOBS")) : 2);
   const int reference_tracked = reference_keyframe_->trackedMapPoints(min_observations);
   int tracked_close = 0;
   int untracked_close = 0;
