@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <set>
-#include <cstdlib>
 
 #include "segslam/mapping/point_fusion.h"
 #include "segslam/optim/bundle_adjuster.h"
@@ -16,7 +15,6 @@ namespace {
 
 constexpr int kMinObservationsOfRecentPoint = 3;  // RGB-D: a point must be seen from 3 keyframes
 constexpr double kMinFoundRatio = 0.25;
-int envInt(const char* n, int d) { return std::getenv(n) ? std::atoi(std::getenv(n)) : d; }
 
 // Keyframes and points of one local bundle adjustment, with the indices the solver uses.
 struct LocalWindow {
@@ -85,7 +83,7 @@ void buildProblem(LocalWindow& window) {
 }  // namespace
 
 LocalMapper::LocalMapper(map::Map& map, LocalMapperOptions options)
-    : map_(map), options_(options) { options_.ba_max_keyframes = envInt("BAK", options_.ba_max_keyframes); }
+    : map_(map), options_(options) {}
 
 LocalMapper::~LocalMapper() { finish(); }
 
