@@ -1,0 +1,101 @@
+#include "segslam/system/sequence_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "segslam/io/tum_dataset.h"
+#include "segslam/synth/generator.h"
+#include "segslam/testing/test_support.h"
+
+// End-to-end runs of the whole pipeline (extraction, tracking, local mapping) in deterministic
+// mode. The bounds are several times the figures measured by bench/tracking_accuracy.sh, so they
+// catch a broken pipeline without depending on the last tenth of a millimetre.
+namespace segslam::system {
+namespace {
+
+using testing::ScopedTempDir;
+
+SequenceRunSummary runDeterministic(const std::filesystem::path& dataset_dir, MaskSource masks,
+                                    const std::filesystem::path& out_dir,
+                                    std::size_t max_frames = SIZE_MAX) {
+  SequenceRunOptions options;
+  options.slam.deterministic = true;
+  options.masks = masks;
+  options.max_frames = max_frames;
+  return runSequence(io::TumDataset::open(dataset_dir), options, out_dir,
+                     [](const FrameStats&) {});
+}
+
+double ateRmse(const SequenceRunSummary& summary) {
+  if (!summary.evaluation) return 1e9;
+  return summary.evaluation->ate.statistics.rmse;
+}
+
+synth::SynthOptions syntheticSequence(int people) {
+  synth::SynthOptions options;
+  options.frames = 90;
+  options.people = people;
+  options.seed = 1;
+  return options;
+}
+
+TEST(SequenceRunner, StaticSyntheticSequenceIsTrackedToMillimetres) {
+  const ScopedTempDir dir;
+  synth::generateSequence(syntheticSequence(0), dir.path() / "sequence");
+  const auto summary = runDeterministic(dir.path() / "sequence", MaskSource::kNone,
+                                        dir.path() / "run");
+  EXPECT_EQ(summary.frames, 90u);
+  EXPECT_EQ(summary.tracked_frames, 90u);
+  EXPECT_GE(summary.keyframes, 1u);
+  EXPECT_LT(ateRmse(summary), 0.005);
+  for (const char* file : {"CameraTrajectory.txt", "KeyFrameTrajectory.txt", "frame_log.csv",
+                           "summary.json", "evaluation.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "run" / file)) << file;
+  }
+}
+
+TEST(SequenceRunner, OracleMasksKeepWalkingPeopleOutOfThePose) {
+  const ScopedTempDir dir;
+  synth::generateSequence(syntheticSequence(2), dir.path() / "sequence");
+  const auto masked = runDeterministic(dir.path() / "sequence", MaskSource::kOracle,
+                                       dir.path() / "masked");
+  EXPECT_EQ(masked.tracked_frames, 90u);
+  EXPECT_LT(ateRmse(masked), 0.005);
+}
+
+TEST(SequenceRunner, DeterministicModeRepeatsItself) {
+  const ScopedTempDir dir;
+  synth::SynthOptions options = syntheticSequence(1);
+  options.frames = 40;
+  synth::generateSequence(options, dir.path() / "sequence");
+  const auto first = runDeterministic(dir.path() / "sequence", MaskSource::kOracle,
+                                      dir.path() / "first");
+  const auto second = runDeterministic(dir.path() / "sequence", MaskSource::kOracle,
+                                       dir.path() / "second");
+  EXPECT_EQ(first.keyframes, second.keyframes);
+  EXPECT_EQ(first.map_points, second.map_points);
+  EXPECT_DOUBLE_EQ(ateRmse(first), ateRmse(second));
+}
+
+TEST(SequenceRunner, RealStaticSequence) {
+  SEGSLAM_REQUIRE_SHARED(dataset, "tum_fr1_xyz_300");
+  const ScopedTempDir dir;
+  const auto summary = runDeterministic(dataset, MaskSource::kNone, dir.path(), 150);
+  EXPECT_EQ(summary.lost_frames, 0u);
+  EXPECT_LT(ateRmse(summary), 0.02);
+}
+
+TEST(SequenceRunner, RealSequenceWithACompositedWalkerAndOracleMasks) {
+  SEGSLAM_REQUIRE_SHARED(dataset, "tum_fr1_xyz_300_walker");
+  const ScopedTempDir dir;
+  // The walker enters the view in the first 150 frames and drags an unmasked run far off.
+  const auto masked = runDeterministic(dataset, MaskSource::kOracle, dir.path() / "masked", 150);
+  EXPECT_EQ(masked.lost_frames, 0u);
+  EXPECT_LT(ateRmse(masked), 0.02);
+  const auto unmasked = runDeterministic(dataset, MaskSource::kNone, dir.path() / "unmasked", 150);
+  EXPECT_GT(ateRmse(unmasked), 0.05);
+}
+
+}  // namespace
+}  // namespace segslam::system
