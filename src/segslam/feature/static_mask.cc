@@ -1,5 +1,6 @@
 #include "segslam/feature/static_mask.h"
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,27 @@ std::vector<int> discHalfWidths(int radius) {
 }
 
 }  // namespace
+
+cv::Mat dilateDynamicMask(const cv::Mat& dynamic_mask, int radius) {
+  if (dynamic_mask.empty()) return {};
+  if (dynamic_mask.type() != CV_8UC1) {
+    throw std::invalid_argument("dilateDynamicMask: dynamic mask must be CV_8UC1");
+  }
+  const cv::Rect box = cv::boundingRect(dynamic_mask);
+  if (box.empty()) return {};
+  cv::Mat binary = cv::Mat::zeros(dynamic_mask.size(), CV_8UC1);
+  const int margin = std::max(radius, 0);
+  const cv::Rect around =
+      cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
+      cv::Rect(0, 0, dynamic_mask.cols, dynamic_mask.rows);
+  cv::threshold(dynamic_mask(around), binary(around), 0, 255, cv::THRESH_BINARY);
+  if (radius <= 0) return binary;
+  cv::Mat dilated = cv::Mat::zeros(dynamic_mask.size(), CV_8UC1);
+  const cv::Size disc(2 * radius + 1, 2 * radius + 1);
+  cv::dilate(binary(around), dilated(around),
+             cv::getStructuringElement(cv::MORPH_ELLIPSE, disc));
+  return dilated;
+}
 
 StaticMask::StaticMask(const cv::Mat& dynamic_mask, int radius) : radius_(radius) {
   if (radius < 0) {

@@ -5,6 +5,12 @@
 
 namespace segslam::feature {
 
+// The dynamic mask dilated by an elliptic disc of `radius` (CV_8UC1, 255 = dynamic), for consumers
+// that look up single pixels, such as map point projection. Empty when nothing is dynamic.
+// Dilates only around the dynamic pixels' bounding box: several times cheaper than the whole
+// frame when objects cover a small part of it, and the same result.
+cv::Mat dilateDynamicMask(const cv::Mat& dynamic_mask, int radius);
+
 // Where keypoints may be extracted, in level-0 pixels: everywhere except within `radius` pixels
 // (Euclidean) of a dynamic pixel. The dilation keeps keypoints, and most of their descriptor
 // patches, off the border of a moving object, where segmentation is least reliable.

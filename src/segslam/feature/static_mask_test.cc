@@ -52,6 +52,29 @@ TEST(FeatureStaticMask, RectangleQueries) {
   EXPECT_TRUE(StaticMask(cv::Mat(), 10).everythingStatic());
 }
 
+TEST(FeatureStaticMask, DilationAroundTheObjectsEqualsDilatingTheWholeFrame) {
+  cv::Mat dynamic(120, 160, CV_8UC1, cv::Scalar(0));
+  cv::circle(dynamic, {40, 30}, 9, cv::Scalar(200), cv::FILLED);
+  cv::rectangle(dynamic, cv::Rect(150, 100, 10, 20), cv::Scalar(1), cv::FILLED);  // at the edge
+  cv::Mat binary;
+  cv::threshold(dynamic, binary, 0, 255, cv::THRESH_BINARY);
+  for (int radius : {0, 1, 6}) {
+    cv::Mat expected = binary.clone();
+    if (radius > 0) {
+      cv::dilate(binary, expected,
+                 cv::getStructuringElement(cv::MORPH_ELLIPSE,
+                                           cv::Size(2 * radius + 1, 2 * radius + 1)));
+    }
+    const cv::Mat dilated = dilateDynamicMask(dynamic, radius);
+    ASSERT_EQ(dilated.type(), CV_8UC1);
+    EXPECT_EQ(cv::countNonZero(dilated != expected), 0) << "radius " << radius;
+  }
+  EXPECT_TRUE(dilateDynamicMask(cv::Mat(10, 10, CV_8UC1, cv::Scalar(0)), 3).empty());
+  EXPECT_TRUE(dilateDynamicMask(cv::Mat(), 3).empty());
+  EXPECT_THROW(dilateDynamicMask(cv::Mat(10, 10, CV_16UC1, cv::Scalar(1)), 3),
+               std::invalid_argument);
+}
+
 TEST(FeatureStaticMask, RejectsBadInput) {
   EXPECT_THROW(StaticMask(cv::Mat(10, 10, CV_8UC1, cv::Scalar(0)), -1), std::invalid_argument);
   EXPECT_THROW(StaticMask(cv::Mat(10, 10, CV_32FC1, cv::Scalar(0)), 2), std::invalid_argument);

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <opencv2/imgproc.hpp>
 
+#include "segslam/feature/static_mask.h"
+
 namespace segslam::system {
 
 namespace {
@@ -24,8 +26,11 @@ geometry::Pose resolvedPose(const tracking::Tracker::FramePoseRecord& record) {
 }
 
 // The system dilates the mask once and shares it between extraction and point projection.
+// Levels are extracted in parallel: the second core is mostly idle between local BAs, and the
+// keypoints are the same either way.
 feature::OrbExtractorOptions extractorOptions(feature::OrbExtractorOptions options) {
   options.mask_dilation_px = 0;
+  options.parallel_levels = true;
   return options;
 }
 
@@ -44,16 +49,6 @@ SlamSystem::SlamSystem(const core::Camera& camera, SlamOptions options)
 
 SlamSystem::~SlamSystem() { finish(); }
 
-cv::Mat SlamSystem::dilatedMask(const cv::Mat& dynamic_mask) const {
-  if (dynamic_mask.empty() || cv::countNonZero(dynamic_mask) == 0) return {};
-  if (options_.mask_dilation_px <= 0) return dynamic_mask;
-  const int size = 2 * options_.mask_dilation_px + 1;
-  cv::Mat dilated;
-  cv::dilate(dynamic_mask, dilated,
-             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(size, size)));
-  return dilated;
-}
-
 FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const cv::Mat& depth_m,
                                     const cv::Mat& dynamic_mask) {
   const auto start = std::chrono::steady_clock::now();
@@ -62,7 +57,7 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
   stats.timestamp = timestamp;
   cv::Mat gray;
   cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
-  const cv::Mat mask = dilatedMask(dynamic_mask);
+  const cv::Mat mask = feature::dilateDynamicMask(dynamic_mask, options_.mask_dilation_px);
   std::vector<cv::KeyPoint> keypoints;
   cv::Mat descriptors;
   extractor_.extract(gray, mask, keypoints, descriptors);

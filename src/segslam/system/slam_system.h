@@ -66,8 +66,6 @@ class SlamSystem {
   }
 
  private:
-  cv::Mat dilatedMask(const cv::Mat& dynamic_mask) const;
-
   SlamOptions options_;
   std::shared_ptr<const map::FrameCamera> camera_;
   feature::OrbExtractor extractor_;
