@@ -13,6 +13,7 @@
 
 #include "segslam/util/error.h"
 #include "segslam/util/text_file.h"
+#include "segslam/util/yaml_document.h"
 
 namespace segslam::io {
 
@@ -34,17 +35,9 @@ core::Camera makeTumCamera(const std::string& name, double fx, double fy, double
   return camera;
 }
 
-int lineOf(const YAML::Node& node) { return node.Mark().line + 1; }
-
 template <typename T>
 T readScalar(const YAML::Node& node, const std::string& key, const std::filesystem::path& file) {
-  try {
-    return node.as<T>();
-  } catch (const YAML::Exception&) {
-    util::failAt(file, lineOf(node),
-                 fmt::format("camera.{} has the wrong type: '{}'", key,
-                             node.IsScalar() ? node.Scalar() : std::string("<not a scalar>")));
-  }
+  return util::yamlValue<T>(node, "camera." + key, file);
 }
 
 template <typename T>
@@ -56,7 +49,7 @@ void readOptional(const YAML::Node& camera_node, const std::string& key,
 
 std::array<double, 5> readDistortion(const YAML::Node& node, const std::filesystem::path& file) {
   if (!node.IsSequence() || node.size() != 5) {
-    util::failAt(file, lineOf(node),
+    util::failAt(file, util::yamlLine(node),
                  "camera.distortion must be a list of 5 numbers [k1, k2, p1, p2, k3]");
   }
   std::array<double, 5> d{};
@@ -64,30 +57,11 @@ std::array<double, 5> readDistortion(const YAML::Node& node, const std::filesyst
   return d;
 }
 
-YAML::Node loadYaml(std::string_view text, const std::filesystem::path& file) {
-  try {
-    return YAML::Load(std::string(text));
-  } catch (const YAML::Exception& e) {
-    util::failAt(file, e.mark.line + 1, fmt::format("malformed YAML: {}", e.msg));
-  }
-}
-
-// A misspelt key would otherwise be ignored silently, leaving a preset or default value in place.
 void rejectUnknownKeys(const YAML::Node& camera_node, const std::filesystem::path& file) {
   static constexpr std::array<std::string_view, 11> kKeys = {
       "preset", "name", "width",      "height",       "fx", "fy",
       "cx",     "cy",   "distortion", "depth_factor", "fps"};
-  for (const auto& entry : camera_node) {
-    const YAML::Node& key = entry.first;
-    const bool known =
-        key.IsScalar() && std::find(kKeys.begin(), kKeys.end(), key.Scalar()) != kKeys.end();
-    if (!known) {
-      util::failAt(file, lineOf(key),
-                   fmt::format("camera.{} is not a known key (known: {})",
-                               key.IsScalar() ? key.Scalar() : std::string("<not a scalar>"),
-                               fmt::join(kKeys, ", ")));
-    }
-  }
+  util::rejectUnknownYamlKeys(camera_node, kKeys, "camera.", file);
 }
 
 core::Camera startingCamera(const YAML::Node& camera_node, const std::filesystem::path& file) {
@@ -96,7 +70,7 @@ core::Camera startingCamera(const YAML::Node& camera_node, const std::filesystem
   try {
     return requireCameraPreset(readScalar<std::string>(preset_node, "preset", file));
   } catch (const util::Error& e) {
-    util::failAt(file, lineOf(preset_node), e.what());
+    util::failAt(file, util::yamlLine(preset_node), e.what());
   }
 }
 
@@ -104,7 +78,7 @@ void requireIntrinsics(const YAML::Node& camera_node, const std::filesystem::pat
   if (camera_node["preset"]) return;
   for (const char* key : {"width", "height", "fx", "fy", "cx", "cy", "depth_factor"}) {
     if (!camera_node[key]) {
-      util::failAt(file, lineOf(camera_node),
+      util::failAt(file, util::yamlLine(camera_node),
                    fmt::format("camera.{} is missing (or give camera.preset)", key));
     }
   }
@@ -169,9 +143,9 @@ core::Camera readCameraYaml(const std::filesystem::path& file) {
 }
 
 core::Camera parseCameraYaml(std::string_view text, const std::filesystem::path& file) {
-  const YAML::Node root = loadYaml(text, file);
+  const YAML::Node root = util::parseYaml(text, file);
   if (!root.IsMap() || !root["camera"] || !root["camera"].IsMap()) {
-    util::failAt(file, lineOf(root), "expected a top-level 'camera:' mapping");
+    util::failAt(file, util::yamlLine(root), "expected a top-level 'camera:' mapping");
   }
   const YAML::Node node = root["camera"];
   rejectUnknownKeys(node, file);
