@@ -17,6 +17,7 @@ namespace {
 
 struct RunOptions : DatasetArguments {
   std::string masks = "none";
+  std::string model_file;
   system::SequenceRunOptions run;
 };
 
@@ -30,6 +31,10 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
   fmt::print(
       "  speed      {:.1f} frames/s end to end, {:.1f} s wall, local BA {:.1f} s, peak RSS {} MB\n",
       s.frames_per_second, s.wall_seconds, s.bundle_adjustment_seconds, s.peak_rss_mb);
+  if (s.network_runs > 0) {
+    fmt::print("  network    ran on {} of {} frames, {:.0f} ms each (own thread)\n", s.network_runs,
+               s.frames, s.network_mean_ms);
+  }
   if (s.evaluation) {
     const auto& ate = s.evaluation->ate.statistics;
     const auto& rpe = s.evaluation->rpe;
@@ -47,6 +52,7 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
 void runCommand(RunOptions& options) {
   const auto dataset = openDataset(options);
   options.run.masks = system::maskSourceFromName(options.masks);
+  if (!options.model_file.empty()) options.run.model_file = options.model_file;
 
   std::filesystem::create_directories(options.out_dir);
   util::addLogFile(options.out_dir / "run.log");
@@ -68,9 +74,19 @@ void registerRunCommand(CLI::App& app) {
   auto* run = app.add_subcommand("run", "Run SLAM on an RGB-D sequence in the TUM layout");
   addDatasetOptions(*run, *options);
   run->add_option("--seg", options->masks,
-                  "Dynamic masks: none, or oracle (the dataset's ground-truth mask.txt)")
+                  "Dynamic masks: none, oracle (the dataset's ground-truth mask.txt) or semantic "
+                  "(a segmentation network, see --model-config)")
       ->capture_default_str()
       ->check(CLI::IsMember(system::maskSourceNames()));
+  options->run.model_config =
+      std::filesystem::path(SEGSLAM_CONFIG_DIR) / "models" / "espnetv2_voc_384.yaml";
+  run->add_option("--model-config", options->run.model_config,
+                  "Segmentation network description (YAML) for --seg semantic")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  run->add_option("--model", options->model_file,
+                  "Network file (ONNX) overriding the config's; else the config's path or "
+                  "$SEGSLAM_MODEL_DIR");
   run->add_option("--mask-dilation", options->run.slam.mask_dilation_px,
                   "Dilation of the dynamic mask before feature extraction (pixels)")
       ->capture_default_str()

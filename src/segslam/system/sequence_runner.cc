@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <memory>
 #include <opencv2/core/utility.hpp>
 
 #include "segslam/eval/evaluation_plots.h"
 #include "segslam/eval/evaluation_report.h"
 #include "segslam/io/trajectory_io.h"
+#include "segslam/segmentation/semantic_mask_stream.h"
 #include "segslam/util/error.h"
 
 namespace segslam::system {
@@ -54,10 +56,11 @@ const char* stateName(tracking::TrackingState state) {
 
 void writeFrameLog(const std::filesystem::path& file, const std::vector<FrameStats>& stats) {
   auto out = fmt::output_file(file.string());
-  out.print("frame,timestamp,extraction_ms,tracking_ms,keypoints,matches,state,keyframe\n");
+  out.print("frame,timestamp,mask_ms,extraction_ms,tracking_ms,keypoints,matches,state,keyframe\n");
   for (const auto& s : stats) {
-    out.print("{},{:.6f},{:.3f},{:.3f},{},{},{},{}\n", s.frame_id, s.timestamp, s.extraction_ms,
-              s.tracking_ms, s.keypoints, s.matches, stateName(s.state), s.keyframe ? 1 : 0);
+    out.print("{},{:.6f},{:.3f},{:.3f},{:.3f},{},{},{},{}\n", s.frame_id, s.timestamp, s.mask_ms,
+              s.extraction_ms, s.tracking_ms, s.keypoints, s.matches, stateName(s.state),
+              s.keyframe ? 1 : 0);
   }
 }
 
@@ -88,22 +91,58 @@ void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
   summary.evaluation = std::move(evaluation);
 }
 
-cv::Mat maskFor(const io::RgbdFrame& frame, MaskSource source) {
-  return source == MaskSource::kOracle ? frame.mask : cv::Mat();
+std::unique_ptr<segmentation::SemanticMaskStream> semanticStream(
+    const SequenceRunOptions& options) {
+  if (options.masks != MaskSource::kSemantic) return nullptr;
+  const auto config = segmentation::readModelConfig(options.model_config);
+  const auto model =
+      segmentation::resolveModelFile(config, options.model_config, options.model_file);
+  segmentation::MaskStreamOptions stream;
+  stream.synchronous = options.slam.deterministic;
+  return std::make_unique<segmentation::SemanticMaskStream>(
+      segmentation::SemanticSegmenter(config, model), stream);
+}
+
+cv::Mat maskFor(const io::RgbdFrame& frame, std::size_t index, MaskSource source,
+                segmentation::SemanticMaskStream* stream) {
+  switch (source) {
+    case MaskSource::kOracle:
+      return frame.mask;
+    case MaskSource::kSemantic:
+      return stream->masksFor(index, frame.rgb).dynamic;
+    case MaskSource::kNone:
+      break;
+  }
+  return {};
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 }  // namespace
 
-std::vector<std::string> maskSourceNames() { return {"none", "oracle"}; }
+std::vector<std::string> maskSourceNames() { return {"none", "oracle", "semantic"}; }
 
 MaskSource maskSourceFromName(const std::string& name) {
   if (name == "oracle") return MaskSource::kOracle;
+  if (name == "semantic") return MaskSource::kSemantic;
   if (name == "none") return MaskSource::kNone;
-  throw util::Error(fmt::format("unknown mask source '{}' (known: none, oracle)", name));
+  throw util::Error(
+      fmt::format("unknown mask source '{}' (known: none, oracle, semantic)", name));
 }
 
 std::string maskSourceName(MaskSource source) {
-  return source == MaskSource::kOracle ? "oracle" : "none";
+  switch (source) {
+    case MaskSource::kOracle:
+      return "oracle";
+    case MaskSource::kSemantic:
+      return "semantic";
+    case MaskSource::kNone:
+      break;
+  }
+  return "none";
 }
 
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
@@ -120,12 +159,21 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   summary.frames = std::min(options.max_frames, dataset.size());
   std::vector<FrameStats> stats;
   {
+    const auto stream = semanticStream(options);
     SlamSystem slam(dataset.camera(), options.slam);
     for (std::size_t i = 0; i < summary.frames; ++i) {
       const io::RgbdFrame frame = dataset.loadFrame(i);
-      stats.push_back(slam.processFrame(frame.timestamp, frame.rgb, frame.depth,
-                                        maskFor(frame, options.masks)));
+      const auto mask_start = std::chrono::steady_clock::now();
+      const cv::Mat mask = maskFor(frame, i, options.masks, stream.get());
+      const double mask_ms = millisecondsSince(mask_start);
+      stats.push_back(slam.processFrame(frame.timestamp, frame.rgb, frame.depth, mask));
+      stats.back().mask_ms = mask_ms;
+      stats.back().tracking_ms += mask_ms;
       if (on_frame) on_frame(stats.back());
+    }
+    if (stream) {
+      summary.network_runs = stream->networkRuns();
+      summary.network_mean_ms = stream->meanNetworkMilliseconds();
     }
     slam.finish();
     summary.wall_seconds =
@@ -172,6 +220,10 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
                          {"frames_per_second", summary.frames_per_second},
                          {"bundle_adjustment_seconds", summary.bundle_adjustment_seconds},
                          {"peak_rss_mb", summary.peak_rss_mb}};
+  if (summary.network_runs > 0) {
+    json["network_runs"] = summary.network_runs;
+    json["network_mean_ms"] = summary.network_mean_ms;
+  }
   if (summary.evaluation) {
     json["ate_rmse_m"] = summary.evaluation->ate.statistics.rmse;
     json["rpe_translational_rmse_m"] = summary.evaluation->rpe.translational.rmse;

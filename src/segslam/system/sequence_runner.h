@@ -17,7 +17,8 @@ namespace segslam::system {
 // Where each frame's dynamic mask comes from.
 enum class MaskSource {
   kNone,    // no masks: everything is treated as static
-  kOracle,  // the dataset's ground-truth masks (mask.txt)
+  kOracle,    // the dataset's ground-truth masks (mask.txt)
+  kSemantic,  // a semantic segmentation network (asynchronous, carried by optical flow)
 };
 std::vector<std::string> maskSourceNames();
 MaskSource maskSourceFromName(const std::string& name);
@@ -28,6 +29,9 @@ struct SequenceRunOptions {
   MaskSource masks = MaskSource::kNone;
   std::size_t max_frames = std::numeric_limits<std::size_t>::max();
   eval::TrajectoryEvaluationOptions evaluation;
+  // Semantic masks: the network's model config and, optionally, the network file overriding it.
+  std::filesystem::path model_config;
+  std::optional<std::filesystem::path> model_file;
   std::uint64_t seed = 0;
 };
 
@@ -50,6 +54,8 @@ struct SequenceRunSummary {
   double frames_per_second = 0.0;  // end to end
   double bundle_adjustment_seconds = 0.0;
   long peak_rss_mb = 0;
+  int network_runs = 0;  // semantic masks: frames the network actually ran on
+  double network_mean_ms = 0.0;
   std::optional<eval::TrajectoryEvaluation> evaluation;
   std::vector<std::filesystem::path> outputs;
 };

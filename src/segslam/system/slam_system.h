@@ -34,7 +34,8 @@ struct FrameStats {
   std::uint64_t frame_id = 0;
   double timestamp = 0.0;
   double extraction_ms = 0.0;
-  double tracking_ms = 0.0;  // extraction included: the time a frame costs the tracking thread
+  double mask_ms = 0.0;      // obtaining the dynamic mask on the tracking thread (not the network)
+  double tracking_ms = 0.0;  // mask and extraction included: what a frame costs the tracking thread
   int keypoints = 0;
   int matches = 0;
   tracking::TrackingState state = tracking::TrackingState::kNotInitialised;

@@ -1,0 +1,69 @@
+#include "segslam/segmentation/mask_propagator.h"
+
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+namespace segslam::segmentation {
+
+MaskPropagator::MaskPropagator(int history, double flow_scale)
+    : history_(history),
+      flow_scale_(flow_scale),
+      flow_(cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST)) {
+  if (history < 1 || flow_scale <= 0.0 || flow_scale > 1.0) {
+    throw std::invalid_argument("MaskPropagator: history >= 1 and flow_scale in (0, 1]");
+  }
+}
+
+void MaskPropagator::addFrame(std::uint64_t frame_id, const cv::Mat& image) {
+  cv::Mat gray;
+  if (image.channels() == 3) {
+    cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
+  } else {
+    gray = image;
+  }
+  cv::Mat small;
+  cv::resize(gray, small, cv::Size(), flow_scale_, flow_scale_, cv::INTER_AREA);
+  if (has_frame_ && small.size() == previous_gray_.size()) {
+    // Backward flow: new(x) ~ previous(x + flow(x)), which is what remapping a previous mask needs.
+    cv::Mat flow;
+    flow_->calc(small, previous_gray_, flow);
+    cv::Mat full_flow;
+    cv::resize(flow, full_flow, gray.size(), 0.0, 0.0, cv::INTER_LINEAR);
+    full_flow *= 1.0 / flow_scale_;
+    Step step{newest_id_, cv::Mat(gray.size(), CV_32FC1), cv::Mat(gray.size(), CV_32FC1)};
+    for (int y = 0; y < gray.rows; ++y) {
+      const auto* f = full_flow.ptr<cv::Point2f>(y);
+      auto* mx = step.map_x.ptr<float>(y);
+      auto* my = step.map_y.ptr<float>(y);
+      for (int x = 0; x < gray.cols; ++x) {
+        mx[x] = static_cast<float>(x) + f[x].x;
+        my[x] = static_cast<float>(y) + f[x].y;
+      }
+    }
+    steps_.push_back(std::move(step));
+    while (static_cast<int>(steps_.size()) > history_) steps_.pop_front();
+  } else {
+    steps_.clear();
+  }
+  previous_gray_ = small;
+  newest_id_ = frame_id;
+  has_frame_ = true;
+}
+
+cv::Mat MaskPropagator::propagate(const cv::Mat& labels, std::uint64_t source_id) const {
+  if (!has_frame_ || source_id > newest_id_) return {};
+  if (source_id == newest_id_) return labels.clone();
+  auto first = steps_.begin();
+  while (first != steps_.end() && first->from_id != source_id) ++first;
+  if (first == steps_.end()) return {};
+  cv::Mat current = labels;
+  for (auto it = first; it != steps_.end(); ++it) {
+    cv::Mat next;
+    cv::remap(current, next, it->map_x, it->map_y, cv::INTER_NEAREST, cv::BORDER_CONSTANT,
+              cv::Scalar(0));
+    current = next;
+  }
+  return current;
+}
+
+}  // namespace segslam::segmentation

@@ -1,0 +1,58 @@
+#include "segslam/segmentation/mask_propagator.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+namespace segslam::segmentation {
+namespace {
+
+cv::Mat texture(cv::Size size) {
+  cv::Mat noise(size, CV_8UC1);
+  cv::RNG rng(7);
+  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
+  cv::GaussianBlur(noise, noise, cv::Size(0, 0), 2.0);
+  cv::normalize(noise, noise, 0, 255, cv::NORM_MINMAX);
+  return noise;
+}
+
+cv::Mat shifted(const cv::Mat& image, double dx, double dy) {
+  const cv::Mat transform = (cv::Mat_<double>(2, 3) << 1, 0, dx, 0, 1, dy);
+  cv::Mat out;
+  cv::warpAffine(image, out, transform, image.size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
+  return out;
+}
+
+double iou(const cv::Mat& a, const cv::Mat& b) {
+  return static_cast<double>(cv::countNonZero(a & b)) / cv::countNonZero(a | b);
+}
+
+TEST(MaskPropagator, LabelsFollowTheImageMotion) {
+  const cv::Mat base = texture({320, 240});
+  MaskPropagator propagator;
+  for (int frame = 0; frame <= 4; ++frame) propagator.addFrame(10 + frame, shifted(base, 3.0 * frame, -2.0 * frame));
+  cv::Mat labels = cv::Mat::zeros(base.size(), CV_8UC1);
+  // Labelled on frame 11 (shifted by 3, -2): after three more steps it moves by (9, -6).
+  labels(cv::Rect(100 + 3, 120 - 2, 60, 40)).setTo(7);
+  const cv::Mat carried = propagator.propagate(labels, 11);
+  ASSERT_EQ(carried.size(), base.size());
+  cv::Mat expected = cv::Mat::zeros(base.size(), CV_8UC1);
+  expected(cv::Rect(100 + 12, 120 - 8, 60, 40)).setTo(7);
+  EXPECT_GT(iou(carried == 7, expected == 7), 0.85);
+  EXPECT_EQ(cv::countNonZero((carried != 0) & (carried != 7)), 0);  // labels are not blended
+}
+
+TEST(MaskPropagator, NewestFrameIsReturnedAsIsAndUnknownSourcesGiveNothing) {
+  const cv::Mat base = texture({160, 120});
+  MaskPropagator propagator(/*history=*/2);
+  const cv::Mat labels(base.size(), CV_8UC1, cv::Scalar(3));
+  EXPECT_TRUE(propagator.propagate(labels, 0).empty());  // no frame yet
+  for (int frame = 0; frame < 5; ++frame) propagator.addFrame(frame, shifted(base, frame, 0));
+  EXPECT_EQ(cv::countNonZero(propagator.propagate(labels, 4) != labels), 0);
+  EXPECT_FALSE(propagator.propagate(labels, 2).empty());
+  EXPECT_TRUE(propagator.propagate(labels, 1).empty());  // older than the history
+  EXPECT_TRUE(propagator.propagate(labels, 9).empty());  // not seen yet
+}
+
+}  // namespace
+}  // namespace segslam::segmentation
