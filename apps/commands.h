@@ -9,6 +9,8 @@ namespace segslam::apps {
 void registerRunCommand(CLI::App& app);
 void registerCheckCommand(CLI::App& app);
 void registerEvalCommand(CLI::App& app);
+// `eval masks`, a sub-command of `eval`.
+void registerEvalMasksCommand(CLI::App& eval);
 void registerSynthCommand(CLI::App& app);
 
 }  // namespace segslam::apps

@@ -131,6 +131,7 @@ void registerEvalCommand(CLI::App& app) {
       "results.json\nWith no sub-command, `eval` evaluates the trajectory given by --gt and "
       "--est; further evaluations are added as sub-commands of `eval`.");
   command->require_subcommand(0, 1);
+  registerEvalMasksCommand(*command);
   auto settings = std::make_shared<TrajectoryEvalSettings>();
   addTrajectoryOptions(*command, *settings);
   command->callback([command, settings] {

@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "dataset_arguments.h"
+#include "mask_arguments.h"
 #include "segslam/io/camera_config.h"
 #include "segslam/io/tum_dataset.h"
 #include "segslam/system/sequence_runner.h"
@@ -16,13 +17,12 @@ namespace segslam::apps {
 namespace {
 
 struct RunOptions : DatasetArguments {
-  std::string masks = "none";
-  std::string model_file;
+  MaskArguments masks;
   system::SequenceRunOptions run;
 };
 
 void printSummary(const RunOptions& options, const system::SequenceRunSummary& s) {
-  fmt::print("\nsegslam run: {} (masks: {})\n", options.dataset.string(), options.masks);
+  fmt::print("\nsegslam run: {} (masks: {})\n", options.dataset.string(), options.masks.source);
   fmt::print("  frames     {} tracked of {} ({} lost), {} keyframes, {} map points\n",
              s.tracked_frames, s.frames, s.lost_frames, s.keyframes, s.map_points);
   fmt::print(
@@ -51,14 +51,13 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
 
 void runCommand(RunOptions& options) {
   const auto dataset = openDataset(options);
-  options.run.masks = system::maskSourceFromName(options.masks);
-  if (!options.model_file.empty()) options.run.model_file = options.model_file;
+  options.run.masks = maskSourceOptions(options.masks);
 
   std::filesystem::create_directories(options.out_dir);
   util::addLogFile(options.out_dir / "run.log");
   io::writeCameraYaml(options.out_dir / "camera.yaml", dataset.camera());
   spdlog::info("dataset {}: {} frames, camera {}, masks {}", options.dataset.string(),
-               dataset.size(), dataset.cameraSource(), options.masks);
+               dataset.size(), dataset.cameraSource(), options.masks.source);
 
   util::ProgressBar progress("tracking", std::min(options.run.max_frames, dataset.size()));
   const auto summary = system::runSequence(dataset, options.run, options.out_dir,
@@ -73,20 +72,7 @@ void registerRunCommand(CLI::App& app) {
   auto options = std::make_shared<RunOptions>();
   auto* run = app.add_subcommand("run", "Run SLAM on an RGB-D sequence in the TUM layout");
   addDatasetOptions(*run, *options);
-  run->add_option("--seg", options->masks,
-                  "Dynamic masks: none, oracle (the dataset's ground-truth mask.txt) or semantic "
-                  "(a segmentation network, see --model-config)")
-      ->capture_default_str()
-      ->check(CLI::IsMember(system::maskSourceNames()));
-  options->run.model_config =
-      std::filesystem::path(SEGSLAM_CONFIG_DIR) / "models" / "espnetv2_voc_384.yaml";
-  run->add_option("--model-config", options->run.model_config,
-                  "Segmentation network description (YAML) for --seg semantic")
-      ->capture_default_str()
-      ->check(CLI::ExistingFile);
-  run->add_option("--model", options->model_file,
-                  "Network file (ONNX) overriding the config's; else the config's path or "
-                  "$SEGSLAM_MODEL_DIR");
+  addMaskOptions(*run, options->masks);
   run->add_option("--mask-dilation", options->run.slam.mask_dilation_px,
                   "Dilation of the dynamic mask before feature extraction (pixels)")
       ->capture_default_str()

@@ -7,13 +7,11 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
-#include <memory>
 #include <opencv2/core/utility.hpp>
 
 #include "segslam/eval/evaluation_plots.h"
 #include "segslam/eval/evaluation_report.h"
 #include "segslam/io/trajectory_io.h"
-#include "segslam/segmentation/semantic_mask_stream.h"
 #include "segslam/util/error.h"
 
 namespace segslam::system {
@@ -91,31 +89,6 @@ void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
   summary.evaluation = std::move(evaluation);
 }
 
-std::unique_ptr<segmentation::SemanticMaskStream> semanticStream(
-    const SequenceRunOptions& options) {
-  if (options.masks != MaskSource::kSemantic) return nullptr;
-  const auto config = segmentation::readModelConfig(options.model_config);
-  const auto model =
-      segmentation::resolveModelFile(config, options.model_config, options.model_file);
-  segmentation::MaskStreamOptions stream;
-  stream.synchronous = options.slam.deterministic;
-  return std::make_unique<segmentation::SemanticMaskStream>(
-      segmentation::SemanticSegmenter(config, model), stream);
-}
-
-cv::Mat maskFor(const io::RgbdFrame& frame, std::size_t index, MaskSource source,
-                segmentation::SemanticMaskStream* stream) {
-  switch (source) {
-    case MaskSource::kOracle:
-      return frame.mask;
-    case MaskSource::kSemantic:
-      return stream->masksFor(index, frame.rgb).dynamic;
-    case MaskSource::kNone:
-      break;
-  }
-  return {};
-}
-
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
@@ -123,35 +96,9 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-std::vector<std::string> maskSourceNames() { return {"none", "oracle", "semantic"}; }
-
-MaskSource maskSourceFromName(const std::string& name) {
-  if (name == "oracle") return MaskSource::kOracle;
-  if (name == "semantic") return MaskSource::kSemantic;
-  if (name == "none") return MaskSource::kNone;
-  throw util::Error(
-      fmt::format("unknown mask source '{}' (known: none, oracle, semantic)", name));
-}
-
-std::string maskSourceName(MaskSource source) {
-  switch (source) {
-    case MaskSource::kOracle:
-      return "oracle";
-    case MaskSource::kSemantic:
-      return "semantic";
-    case MaskSource::kNone:
-      break;
-  }
-  return "none";
-}
-
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
                                const std::filesystem::path& out_dir,
                                const std::function<void(const FrameStats&)>& on_frame) {
-  if (options.masks == MaskSource::kOracle && !dataset.hasMasks()) {
-    util::failAt(dataset.folder() / "mask.txt",
-                 "oracle masks requested (--seg oracle) but the dataset has no mask.txt");
-  }
   cv::setRNGSeed(static_cast<int>(options.seed));
   std::filesystem::create_directories(out_dir);
   const auto start = std::chrono::steady_clock::now();
@@ -159,22 +106,20 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   summary.frames = std::min(options.max_frames, dataset.size());
   std::vector<FrameStats> stats;
   {
-    const auto stream = semanticStream(options);
+    FrameMaskSource masks(dataset, options.masks, options.slam.deterministic);
     SlamSystem slam(dataset.camera(), options.slam);
     for (std::size_t i = 0; i < summary.frames; ++i) {
       const io::RgbdFrame frame = dataset.loadFrame(i);
       const auto mask_start = std::chrono::steady_clock::now();
-      const cv::Mat mask = maskFor(frame, i, options.masks, stream.get());
+      const cv::Mat mask = masks.dynamicMask(frame, i);
       const double mask_ms = millisecondsSince(mask_start);
       stats.push_back(slam.processFrame(frame.timestamp, frame.rgb, frame.depth, mask));
       stats.back().mask_ms = mask_ms;
       stats.back().tracking_ms += mask_ms;
       if (on_frame) on_frame(stats.back());
     }
-    if (stream) {
-      summary.network_runs = stream->networkRuns();
-      summary.network_mean_ms = stream->meanNetworkMilliseconds();
-    }
+    summary.network_runs = masks.networkRuns();
+    summary.network_mean_ms = masks.meanNetworkMilliseconds();
     slam.finish();
     summary.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -10,28 +10,16 @@
 
 #include "segslam/eval/trajectory_evaluation.h"
 #include "segslam/io/tum_dataset.h"
+#include "segslam/system/mask_source.h"
 #include "segslam/system/slam_system.h"
 
 namespace segslam::system {
 
-// Where each frame's dynamic mask comes from.
-enum class MaskSource {
-  kNone,    // no masks: everything is treated as static
-  kOracle,    // the dataset's ground-truth masks (mask.txt)
-  kSemantic,  // a semantic segmentation network (asynchronous, carried by optical flow)
-};
-std::vector<std::string> maskSourceNames();
-MaskSource maskSourceFromName(const std::string& name);
-std::string maskSourceName(MaskSource source);
-
 struct SequenceRunOptions {
   SlamOptions slam;
-  MaskSource masks = MaskSource::kNone;
+  MaskSourceOptions masks;
   std::size_t max_frames = std::numeric_limits<std::size_t>::max();
   eval::TrajectoryEvaluationOptions evaluation;
-  // Semantic masks: the network's model config and, optionally, the network file overriding it.
-  std::filesystem::path model_config;
-  std::optional<std::filesystem::path> model_file;
   std::uint64_t seed = 0;
 };
 

@@ -21,7 +21,7 @@ SequenceRunSummary runDeterministic(const std::filesystem::path& dataset_dir, Ma
                                     std::size_t max_frames = SIZE_MAX) {
   SequenceRunOptions options;
   options.slam.deterministic = true;
-  options.masks = masks;
+  options.masks.source = masks;
   options.max_frames = max_frames;
   return runSequence(io::TumDataset::open(dataset_dir), options, out_dir,
                      [](const FrameStats&) {});

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "segslam/system/mask_source.h"
+
+namespace segslam::apps {
+
+// Where dynamic masks come from, shared by `run` and `eval masks`.
+struct MaskArguments {
+  std::string source = "none";
+  std::string model_file;
+  std::filesystem::path model_config;
+};
+
+// Adds --seg, --model-config and --model to `command`.
+void addMaskOptions(CLI::App& command, MaskArguments& arguments);
+
+system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments);
+
+}  // namespace segslam::apps

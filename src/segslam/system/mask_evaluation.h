@@ -1,0 +1,53 @@
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "segslam/eval/mask_metrics.h"
+#include "segslam/io/tum_dataset.h"
+#include "segslam/system/mask_source.h"
+
+namespace segslam::system {
+
+struct MaskEvaluationOptions {
+  MaskSourceOptions masks;
+  std::size_t max_frames = std::numeric_limits<std::size_t>::max();
+  int mask_dilation_px = 10;  // as SLAM dilates the mask before extraction (survival figure)
+  int features = 1000;
+  bool synchronous = false;   // network on the calling thread (reproducible)
+};
+
+struct FrameMaskScores {
+  double timestamp = 0.0;
+  bool truth_dynamic = false;  // the ground truth marks something in this frame
+  eval::MaskScores scores;
+  eval::KeypointSurvival survival;
+};
+
+struct MaskEvaluationSummary {
+  std::vector<FrameMaskScores> frames;
+  std::size_t frames_with_dynamic = 0;
+  // Means over the frames whose ground truth marks something.
+  double mean_iou = 0.0;
+  double mean_precision = 0.0;
+  double mean_recall = 0.0;
+  eval::MaskScores total;  // all pixels of all frames
+  eval::KeypointSurvival survival;
+};
+
+// Runs a mask source over a dataset with ground-truth masks (mask.txt) and scores every frame:
+// IoU, precision and recall of the predicted dynamic mask, and the share of keypoints on truly
+// dynamic pixels that survive extraction with the predicted (dilated) mask. Writes
+// mask_evaluation.csv (per frame) and mask_evaluation.json (summary) into out_dir.
+// Throws util::Error when the dataset has no mask.txt.
+MaskEvaluationSummary evaluateMasks(const io::TumDataset& dataset,
+                                    const MaskEvaluationOptions& options,
+                                    const std::filesystem::path& out_dir,
+                                    const std::function<void()>& on_frame);
+
+nlohmann::json toJson(const MaskEvaluationSummary& summary);
+
+}  // namespace segslam::system

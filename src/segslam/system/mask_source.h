@@ -1,0 +1,50 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "segslam/io/tum_dataset.h"
+#include "segslam/segmentation/semantic_mask_stream.h"
+
+namespace segslam::system {
+
+// Where each frame's dynamic mask comes from.
+enum class MaskSource {
+  kNone,      // no masks: everything is treated as static
+  kOracle,    // the dataset's ground-truth masks (mask.txt)
+  kSemantic,  // a semantic segmentation network (asynchronous, carried by optical flow)
+};
+std::vector<std::string> maskSourceNames();
+MaskSource maskSourceFromName(const std::string& name);
+std::string maskSourceName(MaskSource source);
+
+struct MaskSourceOptions {
+  MaskSource source = MaskSource::kNone;
+  // Semantic masks: the network's model config and, optionally, the network file overriding it.
+  std::filesystem::path model_config;
+  std::optional<std::filesystem::path> model_file;
+};
+
+// Gives every frame of a sequence its dynamic mask (CV_8UC1, 255 = dynamic; empty = none) from
+// the configured source. Frames must be asked for in order. Throws util::Error when the source
+// cannot work (oracle without mask.txt, missing or broken network).
+class FrameMaskSource {
+ public:
+  // synchronous: run a network on the calling thread (reproducible) instead of its own thread.
+  FrameMaskSource(const io::TumDataset& dataset, const MaskSourceOptions& options,
+                  bool synchronous);
+
+  cv::Mat dynamicMask(const io::RgbdFrame& frame, std::size_t index);
+
+  [[nodiscard]] int networkRuns() const;
+  [[nodiscard]] double meanNetworkMilliseconds() const;
+
+ private:
+  MaskSource source_;
+  std::unique_ptr<segmentation::SemanticMaskStream> semantic_;
+};
+
+}  // namespace segslam::system
