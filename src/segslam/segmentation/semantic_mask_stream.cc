@@ -1,6 +1,8 @@
 #include "segslam/segmentation/semantic_mask_stream.h"
 
+#include <algorithm>
 #include <chrono>
+#include <opencv2/imgproc.hpp>
 
 namespace segslam::segmentation {
 
@@ -84,7 +86,20 @@ SemanticMasks SemanticMaskStream::masksFor(std::uint64_t frame_id, const cv::Mat
   }
   cv::Mat labels = propagator_.propagate(latest_->labels, latest_->frame_id);
   if (labels.empty()) labels = cv::Mat::zeros(bgr.size(), CV_8UC1);
-  return masksFromLabels(labels);
+  SemanticMasks masks = masksFromLabels(labels);
+  growWithAge(masks.dynamic, frame_id - latest_->frame_id);
+  return masks;
+}
+
+void SemanticMaskStream::growWithAge(cv::Mat& dynamic, std::uint64_t age) const {
+  // Optical flow follows textured objects; on plain clothing it mostly sees the background move,
+  // so an old mask falls behind a walking person. Growing it with its age keeps the person
+  // covered until the network's next output.
+  const int radius = static_cast<int>(
+      std::min<std::uint64_t>(age * options_.growth_px_per_frame, options_.max_growth_px));
+  if (radius <= 0 || cv::countNonZero(dynamic) == 0) return;
+  cv::dilate(dynamic, dynamic,
+             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1)));
 }
 
 SemanticMasks SemanticMaskStream::masksFromLabels(const cv::Mat& labels) const {

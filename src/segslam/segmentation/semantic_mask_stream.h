@@ -16,6 +16,9 @@ struct MaskStreamOptions {
   // Otherwise the network runs on its own thread whenever it is free (newest frame wins).
   bool synchronous = false;
   int interval = 5;
+  // A mask carried over from an older frame grows by this much per frame of age (pixels).
+  int growth_px_per_frame = 4;
+  int max_growth_px = 40;
 };
 
 // Semantic masks for every frame without waiting for the network: the newest finished network
@@ -46,6 +49,7 @@ class SemanticMaskStream {
   void submit(std::uint64_t frame_id, const cv::Mat& bgr);
   void segmentNow(std::uint64_t frame_id, const cv::Mat& bgr);
   [[nodiscard]] SemanticMasks masksFromLabels(const cv::Mat& labels) const;
+  void growWithAge(cv::Mat& dynamic, std::uint64_t age) const;
 
   SemanticSegmenter segmenter_;
   MaskStreamOptions options_;
