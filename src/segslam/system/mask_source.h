@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "segslam/io/tum_dataset.h"
+#include "segslam/segmentation/geometric_segmenter.h"
 #include "segslam/segmentation/semantic_mask_stream.h"
 
 namespace segslam::system {
@@ -15,7 +16,9 @@ namespace segslam::system {
 enum class MaskSource {
   kNone,      // no masks: everything is treated as static
   kOracle,    // the dataset's ground-truth masks (mask.txt)
-  kSemantic,  // a semantic segmentation network (asynchronous, carried by optical flow)
+  kSemantic,   // a semantic segmentation network (asynchronous, carried by optical flow)
+  kGeometric,  // whatever the camera motion does not explain (no model needed)
+  kFused,      // semantic first, then geometric on the semantically static area; the union
 };
 std::vector<std::string> maskSourceNames();
 MaskSource maskSourceFromName(const std::string& name);
@@ -43,8 +46,13 @@ class FrameMaskSource {
   [[nodiscard]] double meanNetworkMilliseconds() const;
 
  private:
+  [[nodiscard]] cv::Mat semanticMask(const io::RgbdFrame& frame, std::size_t index);
+  [[nodiscard]] cv::Mat geometricMask(const io::RgbdFrame& frame, const cv::Mat& known_dynamic);
+
   MaskSource source_;
   std::unique_ptr<segmentation::SemanticMaskStream> semantic_;
+  std::optional<segmentation::GeometricSegmenter> geometric_;
+  segmentation::DepthFrame previous_;
 };
 
 }  // namespace segslam::system

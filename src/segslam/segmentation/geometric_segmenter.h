@@ -1,0 +1,49 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "segslam/core/camera.h"
+
+namespace segslam::segmentation {
+
+struct GeometricOptions {
+  int max_corners = 400;            // Shi-Tomasi corners tracked to the previous frame
+  double reprojection_px = 3.0;     // a corner whose motion the camera does not explain moves
+  double depth_tolerance = 0.1;     // relative depth disagreement that also counts as motion
+  double region_depth_range_m = 0.25;  // objects grown from seeds: depth within this of the seed
+  int min_seeds_per_object = 5;     // fewer moving corners in a region: noise, not an object
+  double max_object_share = 0.4;    // a region larger than this share of the image is background
+};
+
+// RGB-D frame as the geometric segmenter sees it.
+struct DepthFrame {
+  cv::Mat gray;   // CV_8UC1
+  cv::Mat depth;  // CV_32FC1 metres, 0 = none
+};
+
+// Finds whatever moves between two RGB-D frames, of any class: corners of the current frame are
+// tracked back to the previous one (pyramidal Lucas-Kanade), the camera motion is estimated from
+// those on static pixels with depth (PnP RANSAC on the previous frame's 3D points: the exact
+// rigid check RGB-D allows, rather than a homography that only holds for planes or pure
+// rotation), and corners that the camera motion does not explain become seeds. Each seed grows
+// into a connected region of similar depth, so whole objects are masked, not scattered pixels.
+class GeometricSegmenter {
+ public:
+  explicit GeometricSegmenter(const core::Camera& camera, GeometricOptions options = {});
+
+  // Dynamic mask (CV_8UC1, 255 = moving) of `current`. `known_dynamic` (may be empty) marks
+  // pixels already known to move (e.g. people from the semantic network): they are left out of
+  // the camera-motion estimate. Empty result when too little is tracked to tell.
+  cv::Mat segment(const DepthFrame& previous, const DepthFrame& current,
+                  const cv::Mat& known_dynamic = cv::Mat()) const;
+
+ private:
+  // The union of the connected regions of similar depth around the seeds that hold enough seeds.
+  [[nodiscard]] cv::Mat growObjects(const cv::Mat& depth, const std::vector<cv::Point>& seeds) const;
+
+  core::Camera camera_;
+  GeometricOptions options_;
+};
+
+}  // namespace segslam::segmentation
