@@ -16,7 +16,9 @@ double MaskScores::iou() const {
   return ratio(true_positive, true_positive + false_positive + false_negative);
 }
 
-double MaskScores::precision() const { return ratio(true_positive, true_positive + false_positive); }
+double MaskScores::precision() const {
+  return ratio(true_positive, true_positive + false_positive);
+}
 
 double MaskScores::recall() const { return ratio(true_positive, true_positive + false_negative); }
 
@@ -28,8 +30,8 @@ MaskScores& MaskScores::operator+=(const MaskScores& other) {
 }
 
 MaskScores compareMasks(const cv::Mat& predicted, const cv::Mat& truth) {
-  if (truth.type() != CV_8UC1 || (!predicted.empty() && (predicted.type() != CV_8UC1 ||
-                                                         predicted.size() != truth.size()))) {
+  if (truth.type() != CV_8UC1 ||
+      (!predicted.empty() && (predicted.type() != CV_8UC1 || predicted.size() != truth.size()))) {
     throw std::invalid_argument("compareMasks: CV_8UC1 masks of the same size expected");
   }
   const cv::Mat truly = truth != 0;

@@ -8,8 +8,8 @@ namespace {
 TEST(MaskMetrics, CountsAgreementPixelByPixel) {
   cv::Mat truth(10, 10, CV_8UC1, cv::Scalar(0));
   cv::Mat predicted(10, 10, CV_8UC1, cv::Scalar(0));
-  truth(cv::Rect(0, 0, 4, 5)).setTo(255);      // 20 pixels
-  predicted(cv::Rect(2, 0, 4, 5)).setTo(1);    // 20 pixels, 10 of them shared
+  truth(cv::Rect(0, 0, 4, 5)).setTo(255);    // 20 pixels
+  predicted(cv::Rect(2, 0, 4, 5)).setTo(1);  // 20 pixels, 10 of them shared
   const MaskScores scores = compareMasks(predicted, truth);
   EXPECT_EQ(scores.true_positive, 10);
   EXPECT_EQ(scores.false_positive, 10);
@@ -33,8 +33,8 @@ TEST(MaskMetrics, EmptyMasksAreHandled) {
 TEST(MaskMetrics, KeypointSurvivalIsTheShareLeftOnMovingObjects) {
   cv::Mat truth(10, 10, CV_8UC1, cv::Scalar(0));
   truth(cv::Rect(0, 0, 5, 10)).setTo(255);
-  const std::vector<cv::KeyPoint> keypoints = {{1.2f, 3.0f, 1.0f}, {4.4f, 9.0f, 1.0f},
-                                               {7.0f, 2.0f, 1.0f}, {-3.0f, 2.0f, 1.0f}};
+  const std::vector<cv::KeyPoint> keypoints = {
+      {1.2f, 3.0f, 1.0f}, {4.4f, 9.0f, 1.0f}, {7.0f, 2.0f, 1.0f}, {-3.0f, 2.0f, 1.0f}};
   EXPECT_EQ(keypointsOnDynamic(keypoints, truth), 2);
   KeypointSurvival survival{4, 1};
   survival += KeypointSurvival{4, 0};

@@ -151,7 +151,8 @@ class GridDetector {
                     std::vector<cv::KeyPoint>::const_iterator end, bool needs_check,
                     std::vector<cv::KeyPoint>& corners) const {
     for (auto corner = begin; corner != end; ++corner) {
-      if (!needs_check || mask_.isStatic(toLevel0(corner->pt, to_base_))) corners.push_back(*corner);
+      if (!needs_check || mask_.isStatic(toLevel0(corner->pt, to_base_)))
+        corners.push_back(*corner);
     }
   }
 
@@ -175,8 +176,7 @@ cv::Rect detectionRegion(cv::Size level_size, int border) {
   return {border, border, width, height};
 }
 
-std::vector<cv::KeyPoint> detectFastInGrid(const cv::Mat& level_image,
-                                           const LevelToBase& to_base,
+std::vector<cv::KeyPoint> detectFastInGrid(const cv::Mat& level_image, const LevelToBase& to_base,
                                            const StaticMask& static_mask,
                                            const FastGridOptions& options) {
   const cv::Rect region =

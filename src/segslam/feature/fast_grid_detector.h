@@ -27,10 +27,9 @@ cv::Rect detectionRegion(cv::Size level_size, int border);
 // FAST-9 corners of one pyramid level, found cell by cell with the fallback threshold, in level
 // coordinates with the FAST score as response. `to_base` maps level to level-0 pixels, where
 // `static_mask` is asked: only corners whose level-0 position (rounded by cvRound) is static
-// are kept, and cells that are wholly dynamic are not searched. Corners come in cell order (row-major), so the output is
-// deterministic.
-std::vector<cv::KeyPoint> detectFastInGrid(const cv::Mat& level_image,
-                                           const LevelToBase& to_base,
+// are kept, and cells that are wholly dynamic are not searched. Corners come in cell order
+// (row-major), so the output is deterministic.
+std::vector<cv::KeyPoint> detectFastInGrid(const cv::Mat& level_image, const LevelToBase& to_base,
                                            const StaticMask& static_mask,
                                            const FastGridOptions& options);
 

@@ -46,7 +46,8 @@ TEST(FeatureFastGrid, KeepsBorderAndMaskAtLevelScale) {
     EXPECT_LT(corner.pt.x, image.cols - options.border);
     EXPECT_GT(corner.response, 0.0f);
   }
-  EXPECT_TRUE(detectFastInGrid(cv::Mat(20, 20, CV_8UC1, cv::Scalar(0)), LevelToBase{}, StaticMask(), options)
+  EXPECT_TRUE(detectFastInGrid(cv::Mat(20, 20, CV_8UC1, cv::Scalar(0)), LevelToBase{}, StaticMask(),
+                               options)
                   .empty());
 }
 

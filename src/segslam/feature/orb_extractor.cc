@@ -115,10 +115,9 @@ void OrbExtractor::run(const cv::Mat& gray, const cv::Mat& dynamic_mask,
   const FastGridOptions grid = fastGridOptions(options_);
   std::vector<std::vector<cv::KeyPoint>> level_keypoints(numLevels());
   forEachLevel([&](int level) {
-    level_keypoints[level] =
-        detectFastInGrid(pyramid_[level],
-                         LevelToBase::between(pyramid_[0].size(), pyramid_[level].size()),
-                         static_mask, grid);
+    level_keypoints[level] = detectFastInGrid(
+        pyramid_[level], LevelToBase::between(pyramid_[0].size(), pyramid_[level].size()),
+        static_mask, grid);
   });
 
   std::vector<int> capacities;

@@ -38,8 +38,7 @@ cv::Mat dilateDynamicMask(const cv::Mat& dynamic_mask, int radius) {
   if (radius <= 0) return binary;
   cv::Mat dilated = cv::Mat::zeros(dynamic_mask.size(), CV_8UC1);
   const cv::Size disc(2 * radius + 1, 2 * radius + 1);
-  cv::dilate(binary(around), dilated(around),
-             cv::getStructuringElement(cv::MORPH_ELLIPSE, disc));
+  cv::dilate(binary(around), dilated(around), cv::getStructuringElement(cv::MORPH_ELLIPSE, disc));
   return dilated;
 }
 

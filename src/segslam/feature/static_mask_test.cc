@@ -61,9 +61,9 @@ TEST(FeatureStaticMask, DilationAroundTheObjectsEqualsDilatingTheWholeFrame) {
   for (int radius : {0, 1, 6}) {
     cv::Mat expected = binary.clone();
     if (radius > 0) {
-      cv::dilate(binary, expected,
-                 cv::getStructuringElement(cv::MORPH_ELLIPSE,
-                                           cv::Size(2 * radius + 1, 2 * radius + 1)));
+      cv::dilate(
+          binary, expected,
+          cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1)));
     }
     const cv::Mat dilated = dilateDynamicMask(dynamic, radius);
     ASSERT_EQ(dilated.type(), CV_8UC1);

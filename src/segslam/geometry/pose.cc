@@ -1,7 +1,7 @@
 #include "segslam/geometry/pose.h"
 
-#include <algorithm>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 
 namespace segslam::geometry {

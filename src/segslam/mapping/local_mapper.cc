@@ -229,13 +229,14 @@ void LocalMapper::localBundleAdjustment(map::KeyFrame& keyframe) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ba_seconds_ += seconds;
-  spdlog::debug("local BA at keyframe {}: {} keyframes ({} fixed), {} points, {} observations, "
-                "{} iterations, {:.0f} ms",
-                keyframe.id, window.problem.keyframes.size(),
-                std::count_if(window.problem.keyframes.begin(), window.problem.keyframes.end(),
-                              [](const optim::BaKeyFrame& k) { return k.fixed; }),
-                window.problem.points.size(), window.problem.observations.size(),
-                result.iterations, 1000.0 * seconds);
+  spdlog::debug(
+      "local BA at keyframe {}: {} keyframes ({} fixed), {} points, {} observations, "
+      "{} iterations, {:.0f} ms",
+      keyframe.id, window.problem.keyframes.size(),
+      std::count_if(window.problem.keyframes.begin(), window.problem.keyframes.end(),
+                    [](const optim::BaKeyFrame& k) { return k.fixed; }),
+      window.problem.points.size(), window.problem.observations.size(), result.iterations,
+      1000.0 * seconds);
 
   std::lock_guard lock(map_.mutex);
   for (std::size_t k = 0; k < window.keyframes.size(); ++k) {

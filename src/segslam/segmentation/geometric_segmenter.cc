@@ -129,7 +129,8 @@ cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame
   return growObjects(current.depth, seeds);
 }
 
-cv::Mat GeometricSegmenter::growObjects(const cv::Mat& depth, const std::vector<cv::Point>& seeds) const {
+cv::Mat GeometricSegmenter::growObjects(const cv::Mat& depth,
+                                        const std::vector<cv::Point>& seeds) const {
   cv::Mat dynamic = cv::Mat::zeros(depth.size(), CV_8UC1);
   cv::Mat visited = cv::Mat::zeros(depth.size(), CV_8UC1);
   const double max_area = options_.max_object_share * static_cast<double>(depth.total());
@@ -140,10 +141,9 @@ cv::Mat GeometricSegmenter::growObjects(const cv::Mat& depth, const std::vector<
     if (z <= 0.0f) continue;
     cv::Mat region = cv::Mat::zeros(depth.rows + 2, depth.cols + 2, CV_8UC1);
     const float range = static_cast<float>(options_.region_depth_range_m);
-    const int area = cv::floodFill(depth_copy, region, seed, cv::Scalar(), nullptr,
-                                   cv::Scalar(range), cv::Scalar(range),
-                                   4 | cv::FLOODFILL_FIXED_RANGE | cv::FLOODFILL_MASK_ONLY |
-                                       (255 << 8));
+    const int area = cv::floodFill(
+        depth_copy, region, seed, cv::Scalar(), nullptr, cv::Scalar(range), cv::Scalar(range),
+        4 | cv::FLOODFILL_FIXED_RANGE | cv::FLOODFILL_MASK_ONLY | (255 << 8));
     const cv::Mat inside = region(cv::Rect(1, 1, depth.cols, depth.rows));
     visited.setTo(255, inside);
     if (area > max_area) continue;

@@ -8,12 +8,12 @@
 namespace segslam::segmentation {
 
 struct GeometricOptions {
-  int max_corners = 400;            // Shi-Tomasi corners tracked to the previous frame
-  double reprojection_px = 3.0;     // a corner whose motion the camera does not explain moves
-  double depth_tolerance = 0.1;     // relative depth disagreement that also counts as motion
+  int max_corners = 400;               // Shi-Tomasi corners tracked to the previous frame
+  double reprojection_px = 3.0;        // a corner whose motion the camera does not explain moves
+  double depth_tolerance = 0.1;        // relative depth disagreement that also counts as motion
   double region_depth_range_m = 0.25;  // objects grown from seeds: depth within this of the seed
-  int min_seeds_per_object = 5;     // fewer moving corners in a region: noise, not an object
-  double max_object_share = 0.4;    // a region larger than this share of the image is background
+  int min_seeds_per_object = 5;        // fewer moving corners in a region: noise, not an object
+  double max_object_share = 0.4;       // a region larger than this share of the image is background
 };
 
 // RGB-D frame as the geometric segmenter sees it.
@@ -40,7 +40,8 @@ class GeometricSegmenter {
 
  private:
   // The union of the connected regions of similar depth around the seeds that hold enough seeds.
-  [[nodiscard]] cv::Mat growObjects(const cv::Mat& depth, const std::vector<cv::Point>& seeds) const;
+  [[nodiscard]] cv::Mat growObjects(const cv::Mat& depth,
+                                    const std::vector<cv::Point>& seeds) const;
 
   core::Camera camera_;
   GeometricOptions options_;

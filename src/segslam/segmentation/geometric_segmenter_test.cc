@@ -44,7 +44,8 @@ TEST(GeometricSegmenter, FindsAMovingBoxAndLeavesTheBackgroundClean) {
   ASSERT_EQ(dynamic.size(), wall.size());
   cv::Mat truth = cv::Mat::zeros(wall.size(), CV_8UC1);
   truth(cv::Rect(214, 180, 120, 100)).setTo(255);
-  const double found = cv::countNonZero(dynamic & truth) / static_cast<double>(cv::countNonZero(truth));
+  const double found =
+      cv::countNonZero(dynamic & truth) / static_cast<double>(cv::countNonZero(truth));
   const double background = cv::countNonZero(dynamic & ~truth) / static_cast<double>(wall.total());
   EXPECT_GT(found, 0.9);
   EXPECT_LT(background, 0.01);

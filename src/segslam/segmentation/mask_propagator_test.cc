@@ -30,7 +30,8 @@ double iou(const cv::Mat& a, const cv::Mat& b) {
 TEST(MaskPropagator, LabelsFollowTheImageMotion) {
   const cv::Mat base = texture({320, 240});
   MaskPropagator propagator;
-  for (int frame = 0; frame <= 4; ++frame) propagator.addFrame(10 + frame, shifted(base, 3.0 * frame, -2.0 * frame));
+  for (int frame = 0; frame <= 4; ++frame)
+    propagator.addFrame(10 + frame, shifted(base, 3.0 * frame, -2.0 * frame));
   cv::Mat labels = cv::Mat::zeros(base.size(), CV_8UC1);
   // Labelled on frame 11 (shifted by 3, -2): after three more steps it moves by (9, -6).
   labels(cv::Rect(100 + 3, 120 - 2, 60, 40)).setTo(7);

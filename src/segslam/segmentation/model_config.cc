@@ -29,8 +29,8 @@ YAML::Node required(const YAML::Node& node, const std::string& key,
 }
 
 template <typename T>
-void readOptional(const YAML::Node& node, const std::string& key,
-                  const std::filesystem::path& file, T& value) {
+void readOptional(const YAML::Node& node, const std::string& key, const std::filesystem::path& file,
+                  T& value) {
   if (const YAML::Node entry = node[key]) value = util::yamlValue<T>(entry, label(key), file);
 }
 
@@ -42,16 +42,19 @@ cv::Scalar readTriple(const YAML::Node& node, const std::string& key,
     util::failAt(file, util::yamlLine(entry), label(key) + " must be a list of 3 numbers");
   }
   cv::Scalar value;
-  for (std::size_t c = 0; c < 3; ++c) value[c] = util::yamlValue<double>(entry[c], label(key), file);
+  for (std::size_t c = 0; c < 3; ++c)
+    value[c] = util::yamlValue<double>(entry[c], label(key), file);
   return value;
 }
 
 std::vector<std::string> readNames(const YAML::Node& node, const std::string& key,
                                    const std::filesystem::path& file) {
   const YAML::Node entry = required(node, key, file);
-  if (!entry.IsSequence()) util::failAt(file, util::yamlLine(entry), label(key) + " must be a list");
+  if (!entry.IsSequence())
+    util::failAt(file, util::yamlLine(entry), label(key) + " must be a list");
   std::vector<std::string> names;
-  for (const auto& name : entry) names.push_back(util::yamlValue<std::string>(name, label(key), file));
+  for (const auto& name : entry)
+    names.push_back(util::yamlValue<std::string>(name, label(key), file));
   return names;
 }
 
@@ -83,7 +86,8 @@ void validate(const ModelConfig& config, const YAML::Node& node,
     }
   }
   if (config.classes.empty() || config.classes.size() > 255) {
-    util::failAt(file, util::yamlLine(node["classes"]), label("classes") + " must list 1-255 names");
+    util::failAt(file, util::yamlLine(node["classes"]),
+                 label("classes") + " must list 1-255 names");
   }
   for (std::size_t i = 0; i < config.dynamic_classes.size(); ++i) {
     const auto& name = config.dynamic_classes[i];

@@ -1,8 +1,8 @@
 #pragma once
 
 #include <filesystem>
-#include <optional>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,12 +18,12 @@ struct ModelConfig {
   std::filesystem::path model;  // as written in the file (relative: see resolveModelFile)
   cv::Size input_size;          // the network's input, the frame is resized to it
   TensorLayout layout = TensorLayout::kNchw;
-  bool rgb = true;              // channel order the network expects (frames are BGR)
-  double scale = 1.0 / 255.0;   // applied to 8-bit pixel values first
-  cv::Scalar mean{0, 0, 0};     // then (value - mean) / std per channel, in the network's order
+  bool rgb = true;             // channel order the network expects (frames are BGR)
+  double scale = 1.0 / 255.0;  // applied to 8-bit pixel values first
+  cv::Scalar mean{0, 0, 0};    // then (value - mean) / std per channel, in the network's order
   cv::Scalar std{1, 1, 1};
-  std::string input;            // input blob name; empty: the network's only input
-  std::string output;           // output blob name; empty: the network's last layer
+  std::string input;                         // input blob name; empty: the network's only input
+  std::string output;                        // output blob name; empty: the network's last layer
   std::vector<std::string> classes;          // class name per output channel
   std::vector<std::string> dynamic_classes;  // classes that move (masked for SLAM)
 

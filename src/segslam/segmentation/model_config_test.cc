@@ -46,7 +46,8 @@ TEST(ModelConfig, ReadsEveryField) {
 }
 
 TEST(ModelConfig, ShippedEspnetConfigIsValid) {
-  const auto file = std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config/models/espnetv2_voc_384.yaml";
+  const auto file =
+      std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config/models/espnetv2_voc_384.yaml";
   const ModelConfig config = readModelConfig(file);
   EXPECT_EQ(config.classes.size(), 21u);
   EXPECT_EQ(config.dynamicClassIndices(), std::vector<int>{15});

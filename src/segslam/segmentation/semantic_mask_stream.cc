@@ -98,8 +98,9 @@ void SemanticMaskStream::growWithAge(cv::Mat& dynamic, std::uint64_t age) const 
   const int radius = static_cast<int>(
       std::min<std::uint64_t>(age * options_.growth_px_per_frame, options_.max_growth_px));
   if (radius <= 0 || cv::countNonZero(dynamic) == 0) return;
-  cv::dilate(dynamic, dynamic,
-             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1)));
+  cv::dilate(
+      dynamic, dynamic,
+      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1)));
 }
 
 SemanticMasks SemanticMaskStream::masksFromLabels(const cv::Mat& labels) const {

@@ -64,8 +64,8 @@ cv::Mat SemanticSegmenter::inputBlob(const cv::Mat& bgr) const {
 
 cv::Mat SemanticSegmenter::labelsFromScores(const cv::Mat& output) const {
   if (output.dims != 4 || output.size[0] != 1) {
-    throw util::Error(fmt::format("segmentation network '{}': expected a 1 x C x H x W output",
-                                  config_.name));
+    throw util::Error(
+        fmt::format("segmentation network '{}': expected a 1 x C x H x W output", config_.name));
   }
   const cv::Mat scores =
       config_.layout == TensorLayout::kNhwc ? permuteBlob(output, false) : output;

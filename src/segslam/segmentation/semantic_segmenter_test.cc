@@ -35,8 +35,8 @@ TEST(SemanticSegmenter, FindsThePeopleInRealTumFrames) {
   SemanticSegmenter segmenter(config, models / "espnetv2_voc_384.onnx");
   for (const char* stamp : {"1341846313.592026", "1341846316.570121"}) {
     const cv::Mat bgr = cv::imread((frames / "rgb" / (std::string(stamp) + ".png")).string());
-    const cv::Mat truth =
-        cv::imread((frames / "mask" / (std::string(stamp) + ".png")).string(), cv::IMREAD_GRAYSCALE);
+    const cv::Mat truth = cv::imread((frames / "mask" / (std::string(stamp) + ".png")).string(),
+                                     cv::IMREAD_GRAYSCALE);
     ASSERT_FALSE(bgr.empty());
     ASSERT_FALSE(truth.empty());
     const SemanticMasks masks = segmenter.segment(bgr);

@@ -43,8 +43,9 @@ void summarise(MaskEvaluationSummary& summary) {
 
 void writeCsv(const std::filesystem::path& file, const MaskEvaluationSummary& summary) {
   auto out = fmt::output_file(file.string());
-  out.print("timestamp,truth_dynamic,iou,precision,recall,keypoints_on_dynamic_unmasked,"
-            "keypoints_on_dynamic_masked\n");
+  out.print(
+      "timestamp,truth_dynamic,iou,precision,recall,keypoints_on_dynamic_unmasked,"
+      "keypoints_on_dynamic_masked\n");
   for (const auto& f : summary.frames) {
     out.print("{:.6f},{},{:.4f},{:.4f},{:.4f},{},{}\n", f.timestamp, f.truth_dynamic ? 1 : 0,
               f.scores.iou(), f.scores.precision(), f.scores.recall(),

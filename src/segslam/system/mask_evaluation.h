@@ -17,7 +17,7 @@ struct MaskEvaluationOptions {
   std::size_t max_frames = std::numeric_limits<std::size_t>::max();
   int mask_dilation_px = 10;  // as SLAM dilates the mask before extraction (survival figure)
   int features = 1000;
-  bool synchronous = false;   // network on the calling thread (reproducible)
+  bool synchronous = false;  // network on the calling thread (reproducible)
 };
 
 struct FrameMaskScores {

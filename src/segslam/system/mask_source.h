@@ -14,8 +14,8 @@ namespace segslam::system {
 
 // Where each frame's dynamic mask comes from.
 enum class MaskSource {
-  kNone,      // no masks: everything is treated as static
-  kOracle,    // the dataset's ground-truth masks (mask.txt)
+  kNone,       // no masks: everything is treated as static
+  kOracle,     // the dataset's ground-truth masks (mask.txt)
   kSemantic,   // a semantic segmentation network (asynchronous, carried by optical flow)
   kGeometric,  // whatever the camera motion does not explain (no model needed)
   kFused,      // semantic first, then geometric on the semantically static area; the union

@@ -23,8 +23,7 @@ SequenceRunSummary runDeterministic(const std::filesystem::path& dataset_dir, Ma
   options.slam.deterministic = true;
   options.masks.source = masks;
   options.max_frames = max_frames;
-  return runSequence(io::TumDataset::open(dataset_dir), options, out_dir,
-                     [](const FrameStats&) {});
+  return runSequence(io::TumDataset::open(dataset_dir), options, out_dir, [](const FrameStats&) {});
 }
 
 double ateRmse(const SequenceRunSummary& summary) {
@@ -43,8 +42,8 @@ synth::SynthOptions syntheticSequence(int people) {
 TEST(SequenceRunner, StaticSyntheticSequenceIsTrackedToMillimetres) {
   const ScopedTempDir dir;
   synth::generateSequence(syntheticSequence(0), dir.path() / "sequence");
-  const auto summary = runDeterministic(dir.path() / "sequence", MaskSource::kNone,
-                                        dir.path() / "run");
+  const auto summary =
+      runDeterministic(dir.path() / "sequence", MaskSource::kNone, dir.path() / "run");
   EXPECT_EQ(summary.frames, 90u);
   EXPECT_EQ(summary.tracked_frames, 90u);
   EXPECT_GE(summary.keyframes, 1u);
@@ -58,8 +57,8 @@ TEST(SequenceRunner, StaticSyntheticSequenceIsTrackedToMillimetres) {
 TEST(SequenceRunner, OracleMasksKeepWalkingPeopleOutOfThePose) {
   const ScopedTempDir dir;
   synth::generateSequence(syntheticSequence(2), dir.path() / "sequence");
-  const auto masked = runDeterministic(dir.path() / "sequence", MaskSource::kOracle,
-                                       dir.path() / "masked");
+  const auto masked =
+      runDeterministic(dir.path() / "sequence", MaskSource::kOracle, dir.path() / "masked");
   EXPECT_EQ(masked.tracked_frames, 90u);
   EXPECT_LT(ateRmse(masked), 0.005);
 }
@@ -69,10 +68,10 @@ TEST(SequenceRunner, DeterministicModeRepeatsItself) {
   synth::SynthOptions options = syntheticSequence(1);
   options.frames = 40;
   synth::generateSequence(options, dir.path() / "sequence");
-  const auto first = runDeterministic(dir.path() / "sequence", MaskSource::kOracle,
-                                      dir.path() / "first");
-  const auto second = runDeterministic(dir.path() / "sequence", MaskSource::kOracle,
-                                       dir.path() / "second");
+  const auto first =
+      runDeterministic(dir.path() / "sequence", MaskSource::kOracle, dir.path() / "first");
+  const auto second =
+      runDeterministic(dir.path() / "sequence", MaskSource::kOracle, dir.path() / "second");
   EXPECT_EQ(first.keyframes, second.keyframes);
   EXPECT_EQ(first.map_points, second.map_points);
   EXPECT_DOUBLE_EQ(ateRmse(first), ateRmse(second));
