@@ -2,33 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/calib3d.hpp>
+
+#include "segslam/core/undistortion.h"
 
 namespace segslam::map {
 
 namespace {
 
-cv::Mat cameraMatrix(const core::Camera& c) {
-  return (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
-}
-
-cv::Mat distortionCoefficients(const core::Camera& c) {
-  return cv::Mat(1, 5, CV_64F, const_cast<double*>(c.distortion.data())).clone();
-}
-
-std::vector<cv::Point2f> undistortPoints(const std::vector<cv::Point2f>& points,
-                                         const core::Camera& camera) {
-  if (!camera.hasDistortion() || points.empty()) return points;
-  std::vector<cv::Point2f> undistorted;
-  const cv::Mat k = cameraMatrix(camera);
-  cv::undistortPoints(points, undistorted, k, distortionCoefficients(camera), cv::noArray(), k);
-  return undistorted;
-}
-
 cv::Rect2d undistortedBounds(const core::Camera& camera) {
   const float w = static_cast<float>(camera.width);
   const float h = static_cast<float>(camera.height);
-  const auto corners = undistortPoints({{0, 0}, {w, 0}, {0, h}, {w, h}}, camera);
+  const auto corners = core::undistortPixels({{0, 0}, {w, 0}, {0, h}, {w, h}}, camera);
   const double min_x = std::min(corners[0].x, corners[2].x);
   const double max_x = std::max(corners[1].x, corners[3].x);
   const double min_y = std::min(corners[0].y, corners[1].y);
@@ -101,7 +85,7 @@ Frame::Frame(std::uint64_t frame_id, double stamp, std::vector<cv::KeyPoint> raw
   std::vector<cv::Point2f> points;
   points.reserve(keypoints.size());
   for (const auto& kp : keypoints) points.push_back(kp.pt);
-  const auto undistorted = undistortPoints(points, camera->camera);
+  const auto undistorted = core::undistortPixels(points, camera->camera);
   keypoints_un = keypoints;
   depth.assign(keypoints.size(), -1.0f);
   right_u.assign(keypoints.size(), -1.0f);

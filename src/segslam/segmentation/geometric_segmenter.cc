@@ -5,25 +5,13 @@
 #include <opencv2/video/tracking.hpp>
 #include <vector>
 
+#include "segslam/core/undistortion.h"
+
 namespace segslam::segmentation {
 
 namespace {
 
 constexpr int kMinStaticCorrespondences = 12;
-
-cv::Mat cameraMatrix(const core::Camera& c) {
-  return (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
-}
-
-std::vector<cv::Point2f> undistorted(const std::vector<cv::Point2f>& points,
-                                     const core::Camera& camera) {
-  if (!camera.hasDistortion() || points.empty()) return points;
-  const cv::Mat k = cameraMatrix(camera);
-  const cv::Mat d(1, 5, CV_64F, const_cast<double*>(camera.distortion.data()));
-  std::vector<cv::Point2f> out;
-  cv::undistortPoints(points, out, k, d, cv::noArray(), k);
-  return out;
-}
 
 float depthAt(const cv::Mat& depth, const cv::Point2f& p) {
   const int x = cvRound(p.x);
@@ -80,8 +68,8 @@ GeometricSegmenter::GeometricSegmenter(const core::Camera& camera, GeometricOpti
 cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame& current,
                                     const cv::Mat& known_dynamic) const {
   const Tracks tracks = trackCorners(previous, current, options_.max_corners);
-  const auto previous_un = undistorted(tracks.previous, camera_);
-  const auto current_un = undistorted(tracks.current, camera_);
+  const auto previous_un = core::undistortPixels(tracks.previous, camera_);
+  const auto current_un = core::undistortPixels(tracks.current, camera_);
 
   // 3D points of the previous frame with their current pixels; static candidates for the pose.
   std::vector<cv::Point3f> points;
@@ -105,7 +93,7 @@ cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame
   if (static_points.size() < static_cast<std::size_t>(kMinStaticCorrespondences)) return {};
   cv::Mat rvec;
   cv::Mat tvec;
-  const cv::Mat k = cameraMatrix(camera_);
+  const cv::Mat k = core::cameraMatrix(camera_);
   if (!cv::solvePnPRansac(static_points, static_pixels, k, cv::noArray(), rvec, tvec, false, 100,
                           static_cast<float>(options_.reprojection_px) * 0.7f, 0.99)) {
     return {};
