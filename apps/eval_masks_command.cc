@@ -47,6 +47,14 @@ void registerEvalMasksCommand(CLI::App& eval) {
                    "Dilation of the predicted mask before keypoint extraction (pixels)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  command->add_flag("--write-masks", options->evaluation.write_masks,
+                    "Also write the predicted masks (masks/<timestamp>.png and mask.txt, the "
+                    "layout of a dataset's ground-truth masks)");
+  command
+      ->add_option("--ignore-masks", options->evaluation.ignore_masks,
+                   "Mask list (timestamp path) of pixels not to score where the ground truth is "
+                   "static, e.g. real people the ground truth does not mark")
+      ->check(CLI::ExistingFile);
   command->add_flag("--deterministic", options->evaluation.synchronous,
                     "Run the network on the calling thread every 5th frame: reproducible");
   command

@@ -5,8 +5,9 @@ namespace segslam::apps {
 void addMaskOptions(CLI::App& command, MaskArguments& arguments) {
   command
       .add_option("--seg", arguments.source,
-                  "Dynamic masks: none, oracle (the dataset's ground-truth mask.txt) or semantic "
-                  "(a segmentation network, see --model-config)")
+                  "Dynamic masks: none, oracle (the dataset's ground-truth mask.txt), semantic "
+                  "(a segmentation network, see --model-config), geometric (whatever the camera "
+                  "motion does not explain) or fused (semantic, then geometric)")
       ->capture_default_str()
       ->check(CLI::IsMember(system::maskSourceNames()));
   arguments.model_config =
@@ -19,6 +20,12 @@ void addMaskOptions(CLI::App& command, MaskArguments& arguments) {
   command.add_option("--model", arguments.model_file,
                      "Network file (ONNX) overriding the config's; else the config's path or "
                      "$SEGSLAM_MODEL_DIR");
+  command
+      .add_option("--camera-motion", arguments.camera_motion,
+                  "Camera motion model of geometric segmentation: rigid (PnP on depth) or "
+                  "homography")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rigid", "homography"}));
 }
 
 system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments) {
@@ -26,6 +33,7 @@ system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments) {
   options.source = system::maskSourceFromName(arguments.source);
   options.model_config = arguments.model_config;
   if (!arguments.model_file.empty()) options.model_file = arguments.model_file;
+  options.geometric.motion_model = segmentation::cameraMotionModelFromName(arguments.camera_motion);
   return options;
 }
 

@@ -12,9 +12,10 @@ struct MaskArguments {
   std::string source = "none";
   std::string model_file;
   std::filesystem::path model_config;
+  std::string camera_motion = "rigid";
 };
 
-// Adds --seg, --model-config and --model to `command`.
+// Adds --seg, --model-config, --model and --camera-motion to `command`.
 void addMaskOptions(CLI::App& command, MaskArguments& arguments);
 
 system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments);

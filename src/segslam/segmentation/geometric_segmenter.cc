@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "segslam/core/undistortion.h"
+#include "segslam/util/error.h"
 
 namespace segslam::segmentation {
 
@@ -62,41 +63,72 @@ Tracks trackCorners(const DepthFrame& previous, const DepthFrame& current, int m
 
 }  // namespace
 
+CameraMotionModel cameraMotionModelFromName(const std::string& name) {
+  if (name == "rigid") return CameraMotionModel::kRigid;
+  if (name == "homography") return CameraMotionModel::kHomography;
+  throw util::Error("unknown camera motion model '" + name + "' (known: rigid, homography)");
+}
+
+// Tracked corners in both frames, raw and undistorted, and whether each is already known to move.
+struct GeometricSegmenter::Correspondences {
+  Tracks raw;
+  std::vector<cv::Point2f> previous_un;
+  std::vector<cv::Point2f> current_un;
+  std::vector<bool> known_dynamic;
+  cv::Mat previous_depth;
+  cv::Mat current_depth;
+};
+
 GeometricSegmenter::GeometricSegmenter(const core::Camera& camera, GeometricOptions options)
     : camera_(camera), options_(options) {}
 
 cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame& current,
                                     const cv::Mat& known_dynamic) const {
-  const Tracks tracks = trackCorners(previous, current, options_.max_corners);
-  const auto previous_un = core::undistortPixels(tracks.previous, camera_);
-  const auto current_un = core::undistortPixels(tracks.current, camera_);
+  Correspondences tracks;
+  tracks.raw = trackCorners(previous, current, options_.max_corners);
+  tracks.previous_un = core::undistortPixels(tracks.raw.previous, camera_);
+  tracks.current_un = core::undistortPixels(tracks.raw.current, camera_);
+  for (const cv::Point2f& p : tracks.raw.current) {
+    tracks.known_dynamic.push_back(isMarked(known_dynamic, p));
+  }
+  tracks.previous_depth = previous.depth;
+  tracks.current_depth = current.depth;
+  const auto seeds = options_.motion_model == CameraMotionModel::kRigid ? rigidMotionSeeds(tracks)
+                                                                        : homographySeeds(tracks);
+  if (!seeds) return {};
+  return growObjects(current.depth, *seeds);
+}
 
+std::optional<std::vector<cv::Point>> GeometricSegmenter::rigidMotionSeeds(
+    const Correspondences& tracks) const {
   // 3D points of the previous frame with their current pixels; static candidates for the pose.
   std::vector<cv::Point3f> points;
   std::vector<cv::Point2f> pixels;
   std::vector<std::size_t> track_of;
   std::vector<cv::Point3f> static_points;
   std::vector<cv::Point2f> static_pixels;
-  for (std::size_t i = 0; i < tracks.current.size(); ++i) {
-    const float z = depthAt(previous.depth, tracks.previous[i]);
+  for (std::size_t i = 0; i < tracks.raw.current.size(); ++i) {
+    const float z = depthAt(tracks.previous_depth, tracks.raw.previous[i]);
     if (z <= 0.0f) continue;
-    const Eigen::Vector3d p = camera_.backProject(previous_un[i].x, previous_un[i].y, z);
+    const Eigen::Vector3d p =
+        camera_.backProject(tracks.previous_un[i].x, tracks.previous_un[i].y, z);
     points.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()),
                         static_cast<float>(p.z()));
-    pixels.push_back(current_un[i]);
+    pixels.push_back(tracks.current_un[i]);
     track_of.push_back(i);
-    if (!isMarked(known_dynamic, tracks.current[i])) {
+    if (!tracks.known_dynamic[i]) {
       static_points.push_back(points.back());
-      static_pixels.push_back(current_un[i]);
+      static_pixels.push_back(tracks.current_un[i]);
     }
   }
-  if (static_points.size() < static_cast<std::size_t>(kMinStaticCorrespondences)) return {};
+  if (static_points.size() < static_cast<std::size_t>(kMinStaticCorrespondences))
+    return std::nullopt;
   cv::Mat rvec;
   cv::Mat tvec;
   const cv::Mat k = core::cameraMatrix(camera_);
   if (!cv::solvePnPRansac(static_points, static_pixels, k, cv::noArray(), rvec, tvec, false, 100,
                           static_cast<float>(options_.reprojection_px) * 0.7f, 0.99)) {
-    return {};
+    return std::nullopt;
   }
 
   // Seeds: corners whose image position or depth the camera motion does not explain.
@@ -108,13 +140,40 @@ cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame
   for (std::size_t j = 0; j < points.size(); ++j) {
     const cv::Mat p = rotation * cv::Mat(cv::Vec3d(points[j].x, points[j].y, points[j].z)) + tvec;
     const double z_predicted = p.at<double>(2);
-    const float z_observed = depthAt(current.depth, tracks.current[track_of[j]]);
+    const cv::Point2f& corner = tracks.raw.current[track_of[j]];
+    const float z_observed = depthAt(tracks.current_depth, corner);
     const bool image_motion = cv::norm(predicted[j] - pixels[j]) > options_.reprojection_px;
     const bool depth_motion = z_observed > 0.0f && std::abs(z_predicted - z_observed) >
                                                        options_.depth_tolerance * z_observed;
-    if (image_motion || depth_motion) seeds.push_back(tracks.current[track_of[j]]);
+    if (image_motion || depth_motion) seeds.push_back(corner);
   }
-  return growObjects(current.depth, seeds);
+  return seeds;
+}
+
+std::optional<std::vector<cv::Point>> GeometricSegmenter::homographySeeds(
+    const Correspondences& tracks) const {
+  std::vector<cv::Point2f> static_previous;
+  std::vector<cv::Point2f> static_current;
+  for (std::size_t i = 0; i < tracks.current_un.size(); ++i) {
+    if (tracks.known_dynamic[i]) continue;
+    static_previous.push_back(tracks.previous_un[i]);
+    static_current.push_back(tracks.current_un[i]);
+  }
+  if (static_previous.size() < static_cast<std::size_t>(kMinStaticCorrespondences)) {
+    return std::nullopt;
+  }
+  const cv::Mat homography =
+      cv::findHomography(static_previous, static_current, cv::RANSAC, options_.reprojection_px);
+  if (homography.empty()) return std::nullopt;
+  std::vector<cv::Point2f> predicted;
+  cv::perspectiveTransform(tracks.previous_un, predicted, homography);
+  std::vector<cv::Point> seeds;
+  for (std::size_t i = 0; i < predicted.size(); ++i) {
+    if (cv::norm(predicted[i] - tracks.current_un[i]) > options_.reprojection_px) {
+      seeds.push_back(tracks.raw.current[i]);
+    }
+  }
+  return seeds;
 }
 
 cv::Mat GeometricSegmenter::growObjects(const cv::Mat& depth,

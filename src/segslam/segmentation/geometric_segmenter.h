@@ -1,13 +1,24 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "segslam/core/camera.h"
 
 namespace segslam::segmentation {
 
+// How the camera-induced image motion is modelled.
+enum class CameraMotionModel {
+  kRigid,       // PnP RANSAC on the previous frame's 3D points: exact for any scene with depth
+  kHomography,  // one homography by RANSAC (the published method): exact for planes or rotation
+};
+
+CameraMotionModel cameraMotionModelFromName(const std::string& name);  // "rigid", "homography"
+
 struct GeometricOptions {
+  CameraMotionModel motion_model = CameraMotionModel::kRigid;
   int max_corners = 400;               // Shi-Tomasi corners tracked to the previous frame
   double reprojection_px = 3.0;        // a corner whose motion the camera does not explain moves
   double depth_tolerance = 0.1;        // relative depth disagreement that also counts as motion
@@ -24,10 +35,10 @@ struct DepthFrame {
 
 // Finds whatever moves between two RGB-D frames, of any class: corners of the current frame are
 // tracked back to the previous one (pyramidal Lucas-Kanade), the camera motion is estimated from
-// those on static pixels with depth (PnP RANSAC on the previous frame's 3D points: the exact
-// rigid check RGB-D allows, rather than a homography that only holds for planes or pure
-// rotation), and corners that the camera motion does not explain become seeds. Each seed grows
-// into a connected region of similar depth, so whole objects are masked, not scattered pixels.
+// those on static pixels (by default PnP RANSAC on the previous frame's 3D points: the exact
+// rigid check RGB-D allows; or a homography, which only holds for planes or pure rotation), and
+// corners that the camera motion does not explain become seeds. Each seed grows into a connected
+// region of similar depth, so whole objects are masked, not scattered pixels.
 class GeometricSegmenter {
  public:
   explicit GeometricSegmenter(const core::Camera& camera, GeometricOptions options = {});
@@ -39,6 +50,11 @@ class GeometricSegmenter {
                   const cv::Mat& known_dynamic = cv::Mat()) const;
 
  private:
+  struct Correspondences;
+  [[nodiscard]] std::optional<std::vector<cv::Point>> rigidMotionSeeds(
+      const Correspondences& tracks) const;
+  [[nodiscard]] std::optional<std::vector<cv::Point>> homographySeeds(
+      const Correspondences& tracks) const;
   // The union of the connected regions of similar depth around the seeds that hold enough seeds.
   [[nodiscard]] cv::Mat growObjects(const cv::Mat& depth,
                                     const std::vector<cv::Point>& seeds) const;

@@ -4,6 +4,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "segslam/util/error.h"
+
 namespace segslam::segmentation {
 namespace {
 
@@ -35,12 +37,25 @@ core::Camera pinhole() {
   return camera;
 }
 
-TEST(GeometricSegmenter, FindsAMovingBoxAndLeavesTheBackgroundClean) {
+GeometricOptions withModel(CameraMotionModel model) {
+  GeometricOptions options;
+  options.motion_model = model;
+  return options;
+}
+
+class GeometricSegmenterModels : public ::testing::TestWithParam<CameraMotionModel> {};
+
+INSTANTIATE_TEST_SUITE_P(RigidAndHomography, GeometricSegmenterModels,
+                         ::testing::Values(CameraMotionModel::kRigid,
+                                           CameraMotionModel::kHomography));
+
+TEST_P(GeometricSegmenterModels, FindsAMovingBoxAndLeavesTheBackgroundClean) {
   const cv::Mat wall = texture({640, 480}, 1);
   const cv::Mat box = texture({120, 100}, 2);
   const DepthFrame previous = scene(200, wall, box);
   const DepthFrame current = scene(214, wall, box);
-  const cv::Mat dynamic = GeometricSegmenter(pinhole()).segment(previous, current);
+  const cv::Mat dynamic =
+      GeometricSegmenter(pinhole(), withModel(GetParam())).segment(previous, current);
   ASSERT_EQ(dynamic.size(), wall.size());
   cv::Mat truth = cv::Mat::zeros(wall.size(), CV_8UC1);
   truth(cv::Rect(214, 180, 120, 100)).setTo(255);
@@ -51,7 +66,7 @@ TEST(GeometricSegmenter, FindsAMovingBoxAndLeavesTheBackgroundClean) {
   EXPECT_LT(background, 0.01);
 }
 
-TEST(GeometricSegmenter, StaticSceneUnderCameraMotionGivesNothing) {
+TEST_P(GeometricSegmenterModels, StaticSceneUnderCameraMotionGivesNothing) {
   // A single plane seen by a camera moving sideways: everything moves, all of it explained by
   // the camera.
   const cv::Mat wall = texture({700, 480}, 3);
@@ -59,7 +74,8 @@ TEST(GeometricSegmenter, StaticSceneUnderCameraMotionGivesNothing) {
                       cv::Mat(480, 640, CV_32FC1, cv::Scalar(3.0f))};
   DepthFrame current{wall(cv::Rect(6, 0, 640, 480)).clone(),
                      cv::Mat(480, 640, CV_32FC1, cv::Scalar(3.0f))};
-  const cv::Mat dynamic = GeometricSegmenter(pinhole()).segment(previous, current);
+  const cv::Mat dynamic =
+      GeometricSegmenter(pinhole(), withModel(GetParam())).segment(previous, current);
   EXPECT_EQ(cv::countNonZero(dynamic), 0);
 }
 
@@ -73,6 +89,12 @@ TEST(GeometricSegmenter, KnownDynamicPixelsAreLeftOutOfTheCameraMotion) {
   const cv::Mat dynamic = GeometricSegmenter(pinhole()).segment(previous, current, known);
   cv::Mat background = ~known;
   EXPECT_LT(cv::countNonZero(dynamic & background), 0.01 * wall.total());
+}
+
+TEST(CameraMotionModel, FromName) {
+  EXPECT_EQ(cameraMotionModelFromName("rigid"), CameraMotionModel::kRigid);
+  EXPECT_EQ(cameraMotionModelFromName("homography"), CameraMotionModel::kHomography);
+  EXPECT_THROW(cameraMotionModelFromName("affine"), util::Error);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 #include "segslam/eval/mask_metrics.h"
@@ -18,6 +19,11 @@ struct MaskEvaluationOptions {
   int mask_dilation_px = 10;  // as SLAM dilates the mask before extraction (survival figure)
   int features = 1000;
   bool synchronous = false;  // network on the calling thread (reproducible)
+  bool write_masks = false;  // predicted masks as masks/<timestamp>.png listed in mask.txt
+  // A mask list (`timestamp path` per line, paths relative to the list) of pixels left out of the
+  // scores where the ground truth is static: real objects of the dynamic classes that the ground
+  // truth does not mark (the seated person in the background of the TUM walker frames).
+  std::optional<std::filesystem::path> ignore_masks;
 };
 
 struct FrameMaskScores {
@@ -41,7 +47,8 @@ struct MaskEvaluationSummary {
 // Runs a mask source over a dataset with ground-truth masks (mask.txt) and scores every frame:
 // IoU, precision and recall of the predicted dynamic mask, and the share of keypoints on truly
 // dynamic pixels that survive extraction with the predicted (dilated) mask. Writes
-// mask_evaluation.csv (per frame) and mask_evaluation.json (summary) into out_dir.
+// mask_evaluation.csv (per frame) and mask_evaluation.json (summary) into out_dir, and with
+// write_masks the predicted masks in the layout of a dataset's mask.txt.
 // Throws util::Error when the dataset has no mask.txt.
 MaskEvaluationSummary evaluateMasks(const io::TumDataset& dataset,
                                     const MaskEvaluationOptions& options,

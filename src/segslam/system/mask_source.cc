@@ -47,6 +47,49 @@ std::string maskSourceName(MaskSource source) {
   return "none";
 }
 
+namespace {
+
+segmentation::Segment semanticSegment(const MaskSourceOptions& options) {
+  const auto config = segmentation::readModelConfig(options.model_config);
+  const auto model =
+      segmentation::resolveModelFile(config, options.model_config, options.model_file);
+  auto segmenter = std::make_shared<segmentation::SemanticSegmenter>(config, model);
+  return [segmenter](const segmentation::SegmentationJob& job) {
+    return segmenter->segment(job.current.bgr);
+  };
+}
+
+segmentation::DepthFrame depthFrame(const segmentation::StreamFrame& frame) {
+  segmentation::DepthFrame depth_frame{cv::Mat(), frame.depth};
+  cv::cvtColor(frame.bgr, depth_frame.gray, cv::COLOR_BGR2GRAY);
+  return depth_frame;
+}
+
+segmentation::Segment geometricSegment(const core::Camera& camera,
+                                       const segmentation::GeometricOptions& options) {
+  auto segmenter = std::make_shared<segmentation::GeometricSegmenter>(camera, options);
+  return [segmenter](const segmentation::SegmentationJob& job) {
+    if (job.previous.bgr.empty()) return segmentation::SemanticMasks{};
+    cv::Mat dynamic =
+        segmenter->segment(depthFrame(job.previous), depthFrame(job.current), job.known_dynamic);
+    return segmentation::SemanticMasks{dynamic, dynamic};
+  };
+}
+
+// The network is slow: it runs every few frames. Geometric segmentation compares consecutive
+// frames, so it runs on every frame it can.
+constexpr int kSemanticInterval = 5;
+constexpr int kGeometricInterval = 1;
+
+segmentation::MaskStreamOptions streamOptions(bool synchronous, int interval) {
+  segmentation::MaskStreamOptions options;
+  options.synchronous = synchronous;
+  options.interval = interval;
+  return options;
+}
+
+}  // namespace
+
 FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSourceOptions& options,
                                  bool synchronous)
     : source_(options.source) {
@@ -54,57 +97,32 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
     util::failAt(dataset.folder() / "mask.txt",
                  "oracle masks requested (--seg oracle) but the dataset has no mask.txt");
   }
-  if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
-    geometric_.emplace(dataset.camera());
-  }
   if (usesNetwork(source_)) {
-    const auto config = segmentation::readModelConfig(options.model_config);
-    const auto model =
-        segmentation::resolveModelFile(config, options.model_config, options.model_file);
-    segmentation::MaskStreamOptions stream;
-    stream.synchronous = synchronous;
-    semantic_ = std::make_unique<segmentation::SemanticMaskStream>(
-        segmentation::SemanticSegmenter(config, model), stream);
+    semantic_ = std::make_unique<segmentation::MaskStream>(
+        semanticSegment(options), streamOptions(synchronous, kSemanticInterval));
+  }
+  if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
+    geometric_ = std::make_unique<segmentation::MaskStream>(
+        geometricSegment(dataset.camera(), options.geometric),
+        streamOptions(synchronous, kGeometricInterval));
   }
 }
 
 cv::Mat FrameMaskSource::dynamicMask(const io::RgbdFrame& frame, std::size_t index) {
-  switch (source_) {
-    case MaskSource::kOracle:
-      return frame.mask;
-    case MaskSource::kSemantic:
-      return semanticMask(frame, index);
-    case MaskSource::kGeometric:
-      return geometricMask(frame, cv::Mat());
-    case MaskSource::kFused: {
-      const cv::Mat semantic = semanticMask(frame, index);
-      const cv::Mat geometric = geometricMask(frame, semantic);
-      if (geometric.empty()) return semantic;
-      return semantic | geometric;
-    }
-    case MaskSource::kNone:
-      break;
-  }
-  return {};
-}
-
-cv::Mat FrameMaskSource::semanticMask(const io::RgbdFrame& frame, std::size_t index) {
-  return semantic_->masksFor(index, frame.rgb).dynamic;
-}
-
-cv::Mat FrameMaskSource::geometricMask(const io::RgbdFrame& frame, const cv::Mat& known_dynamic) {
-  segmentation::DepthFrame current{cv::Mat(), frame.depth};
-  cv::cvtColor(frame.rgb, current.gray, cv::COLOR_BGR2GRAY);
+  if (source_ == MaskSource::kOracle) return frame.mask;
   cv::Mat dynamic;
-  if (!previous_.gray.empty()) dynamic = geometric_->segment(previous_, current, known_dynamic);
-  previous_ = std::move(current);
+  if (semantic_) dynamic = semantic_->masksFor(index, frame.rgb, frame.depth).dynamic;
+  if (geometric_) {
+    const cv::Mat moving = geometric_->masksFor(index, frame.rgb, frame.depth, dynamic).dynamic;
+    dynamic = dynamic.empty() ? moving : (dynamic | moving);
+  }
   return dynamic;
 }
 
-int FrameMaskSource::networkRuns() const { return semantic_ ? semantic_->networkRuns() : 0; }
+int FrameMaskSource::networkRuns() const { return semantic_ ? semantic_->runs() : 0; }
 
 double FrameMaskSource::meanNetworkMilliseconds() const {
-  return semantic_ ? semantic_->meanNetworkMilliseconds() : 0.0;
+  return semantic_ ? semantic_->meanRunMilliseconds() : 0.0;
 }
 
 }  // namespace segslam::system

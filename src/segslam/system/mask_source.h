@@ -8,7 +8,7 @@
 
 #include "segslam/io/tum_dataset.h"
 #include "segslam/segmentation/geometric_segmenter.h"
-#include "segslam/segmentation/semantic_mask_stream.h"
+#include "segslam/segmentation/mask_stream.h"
 
 namespace segslam::system {
 
@@ -29,6 +29,7 @@ struct MaskSourceOptions {
   // Semantic masks: the network's model config and, optionally, the network file overriding it.
   std::filesystem::path model_config;
   std::optional<std::filesystem::path> model_file;
+  segmentation::GeometricOptions geometric;
 };
 
 // Gives every frame of a sequence its dynamic mask (CV_8UC1, 255 = dynamic; empty = none) from
@@ -36,7 +37,7 @@ struct MaskSourceOptions {
 // cannot work (oracle without mask.txt, missing or broken network).
 class FrameMaskSource {
  public:
-  // synchronous: run a network on the calling thread (reproducible) instead of its own thread.
+  // synchronous: segment on the calling thread (reproducible) instead of segmentation threads.
   FrameMaskSource(const io::TumDataset& dataset, const MaskSourceOptions& options,
                   bool synchronous);
 
@@ -46,13 +47,9 @@ class FrameMaskSource {
   [[nodiscard]] double meanNetworkMilliseconds() const;
 
  private:
-  [[nodiscard]] cv::Mat semanticMask(const io::RgbdFrame& frame, std::size_t index);
-  [[nodiscard]] cv::Mat geometricMask(const io::RgbdFrame& frame, const cv::Mat& known_dynamic);
-
   MaskSource source_;
-  std::unique_ptr<segmentation::SemanticMaskStream> semantic_;
-  std::optional<segmentation::GeometricSegmenter> geometric_;
-  segmentation::DepthFrame previous_;
+  std::unique_ptr<segmentation::MaskStream> semantic_;
+  std::unique_ptr<segmentation::MaskStream> geometric_;
 };
 
 }  // namespace segslam::system

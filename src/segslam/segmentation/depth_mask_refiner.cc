@@ -1,0 +1,124 @@
+#include "segslam/segmentation/depth_mask_refiner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace segslam::segmentation {
+
+namespace {
+
+cv::Mat ellipse(int radius) {
+  return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
+}
+
+// floodFill's mask: 1 outside the search band (and on the one-pixel frame it requires), so fills
+// stop there; 0 where the object may extend.
+cv::Mat fillBlocker(const cv::Mat& mask, int band_px) {
+  cv::Mat band;
+  cv::dilate(mask, band, ellipse(band_px));
+  cv::Mat blocker(mask.rows + 2, mask.cols + 2, CV_8UC1, cv::Scalar(1));
+  blocker(cv::Rect(1, 1, mask.cols, mask.rows)).setTo(0, band);
+  return blocker;
+}
+
+// The depth-connected regions reached from the mask's interior, each filled with its own value
+// (2, 3, ...; 1 marks outside the band) in the blocker.
+int fillRegions(const cv::Mat& mask, const cv::Mat& depth, cv::Mat& blocker,
+                const DepthRefinementOptions& options) {
+  cv::Mat interior;
+  cv::erode(mask, interior, ellipse(options.core_erosion_px));
+  cv::Mat depth_image = depth.clone();  // floodFill's signature wants a writable image
+  const cv::Scalar step(options.max_depth_step_m);
+  int next_value = 2;
+  for (int y = 0; y < mask.rows; y += options.seed_step_px) {
+    for (int x = 0; x < mask.cols; x += options.seed_step_px) {
+      if (interior.at<std::uint8_t>(y, x) == 0 || depth.at<float>(y, x) <= 0.0f) continue;
+      if (blocker.at<std::uint8_t>(y + 1, x + 1) != 0) continue;  // already filled
+      cv::floodFill(depth_image, blocker, cv::Point(x, y), cv::Scalar(), nullptr, step, step,
+                    4 | cv::FLOODFILL_MASK_ONLY | (next_value << 8));
+      next_value = std::min(next_value + 1, 255);
+    }
+  }
+  return next_value;
+}
+
+float median(std::vector<float>& values) {
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+bool nearAnyDepth(float depth, const std::vector<float>& object_depths, double tolerance) {
+  return std::any_of(object_depths.begin(), object_depths.end(),
+                     [&](float object) { return std::abs(depth - object) <= tolerance * object; });
+}
+
+// A region mostly outside the mask is the background the mask overlapped (a lagging mask's
+// trailing edge, a coarse network border), not the object; so is one at another depth than every
+// known object (background uncovered inside an old mask).
+cv::Mat objectRegions(const cv::Mat& mask, const cv::Mat& regions, const cv::Mat& depth,
+                      int num_values, const std::vector<float>& object_depths,
+                      const DepthRefinementOptions& options) {
+  std::vector<int> inside(num_values, 0);
+  std::vector<std::vector<float>> depths(num_values);
+  for (int y = 0; y < mask.rows; ++y) {
+    const auto* region = regions.ptr<std::uint8_t>(y);
+    const auto* masked = mask.ptr<std::uint8_t>(y);
+    const auto* z = depth.ptr<float>(y);
+    for (int x = 0; x < mask.cols; ++x) {
+      if (region[x] < 2) continue;
+      depths[region[x]].push_back(z[x]);
+      inside[region[x]] += masked[x] != 0;
+    }
+  }
+  cv::Mat object = cv::Mat::zeros(mask.size(), CV_8UC1);
+  for (int value = 2; value < num_values; ++value) {
+    const auto area = static_cast<int>(depths[value].size());
+    if (area == 0 || 2 * inside[value] < area) continue;
+    if (!object_depths.empty() &&
+        !nearAnyDepth(median(depths[value]), object_depths, options.object_depth_tolerance)) {
+      continue;
+    }
+    object.setTo(255, regions == value);
+  }
+  return object;
+}
+
+}  // namespace
+
+std::vector<float> objectDepths(const cv::Mat& mask, const cv::Mat& depth,
+                                const DepthRefinementOptions& options) {
+  if (mask.empty() || depth.empty()) return {};
+  cv::Mat components;
+  const int count = cv::connectedComponents(mask != 0, components, 8, CV_32S);
+  std::vector<std::vector<float>> depths(count);
+  for (int y = 0; y < mask.rows; ++y) {
+    for (int x = 0; x < mask.cols; ++x) {
+      const int component = components.at<int>(y, x);
+      const float z = depth.at<float>(y, x);
+      if (component > 0 && z > 0.0f) depths[component].push_back(z);
+    }
+  }
+  std::vector<float> medians;
+  for (auto& values : depths) {
+    if (static_cast<int>(values.size()) >= options.min_object_area_px) {
+      medians.push_back(median(values));
+    }
+  }
+  return medians;
+}
+
+cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px,
+                          const std::vector<float>& object_depths,
+                          const DepthRefinementOptions& options) {
+  if (depth.empty() || mask.empty() || cv::countNonZero(mask) == 0) return mask.clone();
+  cv::Mat blocker = fillBlocker(mask, std::max(band_px, 1));
+  const int num_values = fillRegions(mask, depth, blocker, options) + 1;
+  cv::Mat refined = objectRegions(mask, blocker(cv::Rect(1, 1, mask.cols, mask.rows)), depth,
+                                  num_values, object_depths, options);
+  refined.setTo(255, (mask != 0) & (depth <= 0.0f));
+  return refined;
+}
+
+}  // namespace segslam::segmentation

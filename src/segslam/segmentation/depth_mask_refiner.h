@@ -1,0 +1,39 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace segslam::segmentation {
+
+struct DepthRefinementOptions {
+  // The mask's interior (eroded by this much) seeds the object; its border is left to depth.
+  int core_erosion_px = 4;
+  // Seeds are taken on a grid of this step inside the interior (a fill covers its neighbours).
+  int seed_step_px = 4;
+  // Neighbouring pixels belong to the same object when their depths differ by less than this.
+  double max_depth_step_m = 0.03;
+  // A region is one of the known objects when its median depth is within this share of theirs.
+  double object_depth_tolerance = 0.2;
+  // Smaller parts of a mask get no depth of their own (noise, thin limbs at the border).
+  int min_object_area_px = 200;
+};
+
+// Median depth of each connected part of the mask (parts of at least min_object_area_px pixels
+// with depth): where the objects were when the mask was made.
+std::vector<float> objectDepths(const cv::Mat& mask, const cv::Mat& depth,
+                                const DepthRefinementOptions& options = {});
+
+// Snaps an approximate object mask (a network output at its coarse resolution, or one carried
+// over from an older frame) to the object's outline in the depth image: the object is the set of
+// pixels depth-connected to the mask's interior, searched within `band_px` around the mask.
+// A mask that lags behind a moving person thus follows the person as far as the band reaches,
+// instead of being grown blindly in every direction. A region is kept when most of it lies inside
+// the mask and, given object_depths (see objectDepths), when its depth is one of the objects':
+// the background a person has just uncovered is neither. Pixels of the mask without depth are
+// kept. mask: CV_8UC1 (non-zero = object); depth: CV_32FC1 metres (0 = none). Empty depth:
+// unchanged.
+cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px,
+                          const std::vector<float>& object_depths = {},
+                          const DepthRefinementOptions& options = {});
+
+}  // namespace segslam::segmentation

@@ -1,0 +1,75 @@
+#include "segslam/segmentation/depth_mask_refiner.h"
+
+#include <gtest/gtest.h>
+
+namespace segslam::segmentation {
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 120;
+const cv::Rect kObject(60, 40, 40, 50);
+
+// A flat object 1.5 m away in front of a wall 3 m away.
+cv::Mat sceneDepth() {
+  cv::Mat depth(kHeight, kWidth, CV_32FC1, cv::Scalar(3.0f));
+  depth(kObject).setTo(1.5f);
+  return depth;
+}
+
+cv::Mat maskOf(const cv::Rect& rect) {
+  cv::Mat mask = cv::Mat::zeros(kHeight, kWidth, CV_8UC1);
+  mask(rect).setTo(255);
+  return mask;
+}
+
+TEST(RefineMaskByDepth, ALaggingMaskSnapsToTheObjectWithinTheBand) {
+  const cv::Mat lagging = maskOf(kObject - cv::Point(12, 0));
+  const cv::Mat refined = refineMaskByDepth(lagging, sceneDepth(), 16);
+  EXPECT_EQ(cv::countNonZero(refined != maskOf(kObject)), 0);
+}
+
+TEST(RefineMaskByDepth, TheObjectIsNotFollowedBeyondTheBand) {
+  const cv::Mat lagging = maskOf(kObject - cv::Point(10, 0));
+  const cv::Mat refined = refineMaskByDepth(lagging, sceneDepth(), 6);
+  const cv::Rect reachable(kObject.x, kObject.y, kObject.width - 10 + 6, kObject.height);
+  EXPECT_EQ(cv::countNonZero(refined != maskOf(reachable)), 0);
+}
+
+TEST(RefineMaskByDepth, MaskPixelsWithoutDepthAreKeptAndNothingElseIsAdded) {
+  cv::Mat depth = sceneDepth();
+  const cv::Rect hole(70, 50, 10, 10);
+  depth(hole).setTo(0.0f);
+  const cv::Mat refined = refineMaskByDepth(maskOf(kObject), depth, 8);
+  EXPECT_EQ(cv::countNonZero(refined != maskOf(kObject)), 0);
+}
+
+TEST(RefineMaskByDepth, RegionsAtAnotherDepthThanTheObjectsAreDropped) {
+  // Where the mask is, the object has gone and uncovered a box 2.2 m away.
+  const cv::Rect uncovered(10, 10, 30, 30);
+  cv::Mat depth = sceneDepth();
+  depth(uncovered).setTo(2.2f);
+  const cv::Mat old_mask = maskOf(uncovered);
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(old_mask, depth, 8, {1.5f})), 0);
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(old_mask, depth, 8) != old_mask), 0);
+}
+
+TEST(ObjectDepths, MedianDepthOfEachLargeEnoughPart) {
+  cv::Mat depth = sceneDepth();
+  const cv::Rect second(10, 10, 30, 30);
+  depth(second).setTo(2.2f);
+  cv::Mat mask = maskOf(kObject) | maskOf(second) | maskOf(cv::Rect(140, 100, 5, 5));
+  const std::vector<float> depths = objectDepths(mask, depth);
+  ASSERT_EQ(depths.size(), 2u);
+  EXPECT_FLOAT_EQ(depths[0], 2.2f);
+  EXPECT_FLOAT_EQ(depths[1], 1.5f);
+}
+
+TEST(RefineMaskByDepth, WithoutDepthOrObjectTheMaskIsUnchanged) {
+  const cv::Mat mask = maskOf(kObject);
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(mask, cv::Mat(), 8) != mask), 0);
+  const cv::Mat empty = cv::Mat::zeros(kHeight, kWidth, CV_8UC1);
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(empty, sceneDepth(), 8)), 0);
+}
+
+}  // namespace
+}  // namespace segslam::segmentation

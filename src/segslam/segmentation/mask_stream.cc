@@ -1,0 +1,146 @@
+#include "segslam/segmentation/mask_stream.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <opencv2/imgproc.hpp>
+
+namespace segslam::segmentation {
+
+namespace {
+
+// Linux schedules threads individually, so a thread's niceness can be raised on its own.
+void lowerThisThreadsPriority(int niceness) {
+  if (niceness > 0) setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), niceness);
+}
+
+StreamFrame copyOf(const StreamFrame& frame) {
+  return {frame.id, frame.bgr.clone(), frame.depth.clone()};
+}
+
+}  // namespace
+
+MaskStream::MaskStream(Segment segment, MaskStreamOptions options)
+    : segment_(std::move(segment)), options_(options) {
+  if (options_.interval < 1) options_.interval = 1;
+  if (!options_.synchronous) thread_ = std::thread([this] { work(); });
+}
+
+MaskStream::~MaskStream() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  if (thread_.joinable()) thread_.join();
+}
+
+void MaskStream::work() {
+  lowerThisThreadsPriority(options_.thread_niceness);
+  while (true) {
+    SegmentationJob job;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
+      if (stopping_) return;
+      job = std::move(*pending_);
+      pending_.reset();
+      busy_ = true;
+    }
+    Result result = run(job);
+    {
+      std::lock_guard lock(mutex_);
+      finished_ = std::move(result);
+      busy_ = false;
+    }
+    changed_.notify_all();
+  }
+}
+
+MaskStream::Result MaskStream::run(const SegmentationJob& job) {
+  const auto start = std::chrono::steady_clock::now();
+  SemanticMasks masks = segment_(job);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  {
+    std::lock_guard lock(mutex_);
+    ++runs_;
+    total_ms_ += ms;
+  }
+  if (masks.dynamic.empty()) masks.dynamic = cv::Mat::zeros(job.current.bgr.size(), CV_8UC1);
+  if (masks.labels.empty()) masks.labels = masks.dynamic.clone();
+  std::vector<float> depths = objectDepths(masks.dynamic, job.current.depth, options_.refinement);
+  return {job.current.id, std::move(masks), std::move(depths)};
+}
+
+void MaskStream::submit(SegmentationJob job) {
+  {
+    std::lock_guard lock(mutex_);
+    if (busy_ || pending_) return;
+    pending_ =
+        SegmentationJob{copyOf(job.previous), copyOf(job.current), job.known_dynamic.clone()};
+  }
+  changed_.notify_all();
+}
+
+SemanticMasks MaskStream::masksFor(std::uint64_t frame_id, const cv::Mat& bgr, const cv::Mat& depth,
+                                   const cv::Mat& known_dynamic) {
+  propagator_.addFrame(frame_id, bgr);
+  SegmentationJob job{previous_, StreamFrame{frame_id, bgr, depth}, known_dynamic};
+  if (options_.synchronous) {
+    if (!latest_ || frame_id - latest_->frame_id >= static_cast<std::uint64_t>(options_.interval)) {
+      latest_ = run(job);
+    }
+  } else {
+    submit(job);
+    std::unique_lock lock(mutex_);
+    if (!latest_ && !finished_) {
+      changed_.wait(lock, [this] { return finished_.has_value(); });
+    }
+    if (finished_) {
+      latest_ = std::move(finished_);
+      finished_.reset();
+    }
+  }
+  previous_ = job.current;
+  SemanticMasks masks{propagator_.propagate(latest_->masks.labels, latest_->frame_id),
+                      propagator_.propagate(latest_->masks.dynamic, latest_->frame_id)};
+  if (masks.labels.empty()) masks.labels = cv::Mat::zeros(bgr.size(), CV_8UC1);
+  if (masks.dynamic.empty()) masks.dynamic = cv::Mat::zeros(bgr.size(), CV_8UC1);
+  masks.dynamic = fitToObjects(masks.dynamic, depth, frame_id);
+  return masks;
+}
+
+cv::Mat MaskStream::fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,
+                                 std::uint64_t frame_id) const {
+  // Optical flow follows textured objects; on plain clothing it mostly sees the background move,
+  // so an old mask falls behind a walking person. The person is searched for around the mask, as
+  // far as it can have moved since the segmenter saw it.
+  const std::uint64_t age = frame_id - latest_->frame_id;
+  const int lag = static_cast<int>(
+      std::min<std::uint64_t>(age * options_.growth_px_per_frame, options_.max_growth_px));
+  if (cv::countNonZero(dynamic) == 0) return dynamic;
+  if (!depth.empty()) {
+    return refineMaskByDepth(dynamic, depth, lag + options_.min_band_px, latest_->object_depths,
+                             options_.refinement);
+  }
+  if (lag == 0) return dynamic;
+  cv::Mat grown;
+  cv::dilate(dynamic, grown,
+             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * lag + 1, 2 * lag + 1)));
+  return grown;
+}
+
+int MaskStream::runs() const {
+  std::lock_guard lock(mutex_);
+  return runs_;
+}
+
+double MaskStream::meanRunMilliseconds() const {
+  std::lock_guard lock(mutex_);
+  return runs_ > 0 ? total_ms_ / runs_ : 0.0;
+}
+
+}  // namespace segslam::segmentation

@@ -1,0 +1,102 @@
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "segslam/segmentation/depth_mask_refiner.h"
+#include "segslam/segmentation/mask_propagator.h"
+#include "segslam/segmentation/semantic_segmenter.h"
+
+namespace segslam::segmentation {
+
+struct MaskStreamOptions {
+  // Segments on the calling thread every `interval`-th frame: slower, reproducible. Otherwise the
+  // segmenter runs on its own thread whenever it is free (newest frame wins).
+  bool synchronous = false;
+  int interval = 5;
+  // Lowers the segmentation thread's scheduling priority (nice) so that it takes only the CPU
+  // time tracking and mapping leave: a late mask is carried over, a late frame is lost.
+  int thread_niceness = 10;
+  // A mask carried over from an older frame may have fallen behind its object by this much per
+  // frame of age (pixels): the depth refinement searches that far around it (or, without depth,
+  // the mask is grown that much).
+  int growth_px_per_frame = 4;
+  int max_growth_px = 40;
+  // Even a fresh output is searched this far around (a network sees a downscaled image).
+  int min_band_px = 8;
+  DepthRefinementOptions refinement;
+};
+
+// A frame as the segmenters see it.
+struct StreamFrame {
+  std::uint64_t id = 0;
+  cv::Mat bgr;    // CV_8UC3
+  cv::Mat depth;  // CV_32FC1 metres, or empty
+};
+
+// What a segmenter is given: the frame, the one before it (empty for the first), and what is
+// already known to move in the frame (another method's mask, or empty).
+struct SegmentationJob {
+  StreamFrame previous;
+  StreamFrame current;
+  cv::Mat known_dynamic;
+};
+using Segment = std::function<SemanticMasks(const SegmentationJob&)>;
+
+// Masks for every frame without waiting for a slow segmenter (a 150-200 ms network, geometric
+// segmentation): the newest finished output is carried to the current frame by optical flow
+// (MaskPropagator) and snapped to the objects' depth outlines. The segmenter runs on its own
+// thread, one frame in flight. Only the first frame waits for its own output, so that the map
+// never starts on people.
+class MaskStream {
+ public:
+  MaskStream(Segment segment, MaskStreamOptions options = {});
+  ~MaskStream();
+  MaskStream(const MaskStream&) = delete;
+  MaskStream& operator=(const MaskStream&) = delete;
+
+  // Masks for this frame (frames in increasing id order; bgr CV_8UC3; depth CV_32FC1 metres or
+  // empty). With depth, the dynamic mask is snapped to the objects' depth outlines.
+  SemanticMasks masksFor(std::uint64_t frame_id, const cv::Mat& bgr, const cv::Mat& depth,
+                         const cv::Mat& known_dynamic = cv::Mat());
+
+  // Segmenter runs finished so far and their mean time.
+  [[nodiscard]] int runs() const;
+  [[nodiscard]] double meanRunMilliseconds() const;
+
+ private:
+  struct Result {
+    std::uint64_t frame_id;
+    SemanticMasks masks;
+    std::vector<float> object_depths;  // of the dynamic objects, in the segmented frame
+  };
+
+  void work();
+  void submit(SegmentationJob job);
+  [[nodiscard]] Result run(const SegmentationJob& job);
+  [[nodiscard]] cv::Mat fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,
+                                     std::uint64_t frame_id) const;
+
+  Segment segment_;
+  MaskStreamOptions options_;
+  MaskPropagator propagator_;
+  StreamFrame previous_;          // the caller's last frame
+  std::optional<Result> latest_;  // newest output, on the caller's side
+
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::optional<SegmentationJob> pending_;  // frame waiting for the segmenter
+  std::optional<Result> finished_;          // output not yet collected
+  bool busy_ = false;
+  bool stopping_ = false;
+  int runs_ = 0;
+  double total_ms_ = 0.0;
+  std::thread thread_;
+};
+
+}  // namespace segslam::segmentation

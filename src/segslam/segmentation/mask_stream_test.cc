@@ -1,0 +1,116 @@
+#include "segslam/segmentation/mask_stream.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <mutex>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "segslam/testing/test_support.h"
+
+namespace segslam::segmentation {
+namespace {
+
+SemanticSegmenter espnet() {
+  const auto config_file =
+      std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config/models/espnetv2_voc_384.yaml";
+  return SemanticSegmenter(readModelConfig(config_file),
+                           *testing::sharedDir() / "models" / "espnetv2_voc_384.onnx");
+}
+
+Segment espnetSegment() {
+  auto segmenter = std::make_shared<SemanticSegmenter>(espnet());
+  return [segmenter](const SegmentationJob& job) { return segmenter->segment(job.current.bgr); };
+}
+
+TEST(MaskStream, EveryFrameGetsAMaskWithoutWaitingForTheNetwork) {
+  SEGSLAM_REQUIRE_SHARED(frames, "tum_walking_xyz_frames");
+  const cv::Mat bgr = cv::imread((frames / "rgb" / "1341846313.592026.png").string());
+  ASSERT_FALSE(bgr.empty());
+  SemanticSegmenter direct = espnet();
+  const SemanticMasks expected = direct.segment(bgr);
+  const MaskStreamOptions options;
+  cv::Mat grown_limit;
+  const int limit = options.max_growth_px + 1;
+  cv::dilate(expected.dynamic, grown_limit,
+             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * limit + 1, 2 * limit + 1)));
+  MaskStream stream(espnetSegment(), options);
+  for (std::uint64_t frame = 0; frame < 12; ++frame) {
+    const SemanticMasks masks = stream.masksFor(frame, bgr, cv::Mat());
+    ASSERT_EQ(masks.dynamic.size(), bgr.size()) << frame;
+    ASSERT_EQ(masks.labels.size(), bgr.size()) << frame;
+    // The camera does not move, so whichever output the frame gets, it covers the first
+    // frame's, grown by at most the options' limit as it ages.
+    EXPECT_LT(cv::countNonZero(expected.dynamic & ~masks.dynamic), 0.01 * bgr.total()) << frame;
+    EXPECT_EQ(cv::countNonZero(masks.dynamic & ~grown_limit), 0) << frame;
+  }
+  // The first frame waits for its own output; later frames only take what is finished.
+  EXPECT_GE(stream.runs(), 1);
+  EXPECT_LT(stream.runs(), 12);
+}
+
+TEST(MaskStream, SynchronousModeRunsTheNetworkEveryIntervalFrames) {
+  SEGSLAM_REQUIRE_SHARED(frames, "tum_walking_xyz_frames");
+  const cv::Mat bgr = cv::imread((frames / "rgb" / "1341846316.570121.png").string());
+  MaskStreamOptions options;
+  options.synchronous = true;
+  options.interval = 4;
+  MaskStream stream(espnetSegment(), options);
+  for (std::uint64_t frame = 0; frame < 9; ++frame) {
+    EXPECT_GT(cv::countNonZero(stream.masksFor(frame, bgr, cv::Mat()).dynamic), 0) << frame;
+  }
+  EXPECT_EQ(stream.runs(), 3);  // frames 0, 4 and 8
+}
+
+// A segmenter that marks nothing and records the frames it was given.
+struct RecordedJobs {
+  std::mutex mutex;
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> previous_and_current;
+};
+
+Segment recordingSegment(const std::shared_ptr<RecordedJobs>& record) {
+  return [record](const SegmentationJob& job) {
+    std::lock_guard lock(record->mutex);
+    record->previous_and_current.emplace_back(job.previous.id, job.current.id);
+    return SemanticMasks{};
+  };
+}
+
+TEST(MaskStream, SynchronousSegmenterGetsEachFrameWithTheOneBefore) {
+  auto record = std::make_shared<RecordedJobs>();
+  MaskStreamOptions options;
+  options.synchronous = true;
+  options.interval = 1;
+  MaskStream stream(recordingSegment(record), options);
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  for (std::uint64_t frame = 1; frame <= 4; ++frame) {
+    const SemanticMasks masks = stream.masksFor(frame, bgr, cv::Mat());
+    EXPECT_EQ(masks.dynamic.size(), bgr.size());
+    EXPECT_EQ(cv::countNonZero(masks.dynamic), 0);
+  }
+  const std::vector<std::pair<std::uint64_t, std::uint64_t>> expected = {
+      {0, 1}, {1, 2}, {2, 3}, {3, 4}};
+  EXPECT_EQ(record->previous_and_current, expected);
+}
+
+TEST(MaskStream, AsynchronousSegmenterSeesFramesInOrder) {
+  auto record = std::make_shared<RecordedJobs>();
+  MaskStream stream(recordingSegment(record));
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  for (std::uint64_t frame = 1; frame <= 20; ++frame) {
+    EXPECT_EQ(stream.masksFor(frame, bgr, cv::Mat()).dynamic.size(), bgr.size());
+  }
+  std::lock_guard lock(record->mutex);
+  ASSERT_FALSE(record->previous_and_current.empty());
+  EXPECT_EQ(record->previous_and_current.front().second, 1u);  // the first frame waits
+  for (std::size_t i = 1; i < record->previous_and_current.size(); ++i) {
+    const auto [previous, current] = record->previous_and_current[i];
+    EXPECT_GT(current, record->previous_and_current[i - 1].second);
+    EXPECT_EQ(previous + 1, current);
+  }
+}
+
+}  // namespace
+}  // namespace segslam::segmentation
