@@ -77,6 +77,16 @@ TEST_F(ViewerMapServer, ServesThePageAndRunFiles) {
   EXPECT_EQ(trajectory->body, readFile(dir_.path() / "run" / "CameraTrajectory.txt"));
 }
 
+TEST_F(ViewerMapServer, SendsTheBundleUncompressedAsJavaScript) {
+  std::ofstream(dir_.path() / "web" / "viewer.js") << std::string(4096, ';');
+  const auto response = client_->Get("/viewer.js", {{"Accept-Encoding", "gzip, deflate, br"}});
+  ASSERT_TRUE(response);
+  EXPECT_EQ(response->status, 200);
+  EXPECT_FALSE(response->has_header("Content-Encoding"));
+  EXPECT_NE(response->get_header_value("Content-Type").find("javascript"), std::string::npos);
+  EXPECT_EQ(response->body.size(), 4096u);
+}
+
 TEST_F(ViewerMapServer, RefusesPathsOutsideTheServedFolders) {
   std::ofstream(dir_.path() / "secret.txt") << "secret";
   for (const char* path : {"/run/../secret.txt", "/run/../../etc/passwd", "/../secret.txt",
