@@ -69,11 +69,17 @@ async function openRun(browser, runDir) {
     if (message.type() === "error") console.error(`page console: ${message.text()}`);
   });
   page.on("pageerror", (error) => console.error(`page error: ${error.message}`));
-  await page.goto(url, { timeout: 120000 });
-  await page.waitForFunction(() => window.segslamViewer?.state.ready, null, { timeout: 120000 });
-  const error = await page.evaluate(() => window.segslamViewer.state.error);
-  if (error) throw new Error(`the page failed to load the run: ${error}`);
-  return { page, stop: () => child.kill("SIGTERM") };
+  const stop = () => child.kill("SIGTERM");
+  try {
+    await page.goto(url, { timeout: 120000 });
+    await page.waitForFunction(() => window.segslamViewer?.state.ready, null, { timeout: 120000 });
+    const error = await page.evaluate(() => window.segslamViewer.state.error);
+    if (error) throw new Error(`the page failed to load the run: ${error}`);
+  } catch (error) {
+    stop();
+    throw error;
+  }
+  return { page, stop };
 }
 
 const stats = (page) => page.evaluate(() => window.segslamViewer.stats());
