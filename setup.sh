@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/install_deps.sh
+scripts/build_web.sh
 scripts/build.sh build
 ./build/segslam synth --out out/demo_sequence --seed 1
 ./build/segslam run --dataset out/demo_sequence --out out/demo_run

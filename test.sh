@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/install_deps.sh
+scripts/build_web.sh
 if [ "${1:-}" = "--sanitize" ]; then
   # GCC 12's flow-based warnings (maybe-uninitialized inside std::regex and std::function, among
   # others) give false positives on ASan-instrumented code, so this build does not turn warnings

@@ -12,5 +12,6 @@ void registerEvalCommand(CLI::App& app);
 // `eval masks`, a sub-command of `eval`.
 void registerEvalMasksCommand(CLI::App& eval);
 void registerSynthCommand(CLI::App& app);
+void registerViewCommand(CLI::App& app);
 
 }  // namespace segslam::apps

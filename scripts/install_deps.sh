@@ -9,7 +9,12 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev libyaml-cpp-dev libtbb-dev
   clang libclang-rt-14-dev clang-format
+  libcpp-httplib-dev chromium
 )
+# The viewer's front end is built with node and npm (scripts/build_web.sh). Debian's packages are
+# used only when no node is installed: a NodeSource nodejs already provides npm and conflicts
+# with Debian's.
+if ! command -v npm >/dev/null 2>&1; then packages+=(nodejs npm); fi
 
 missing=()
 for package in "${packages[@]}"; do

@@ -52,6 +52,14 @@ geometry::Pose Alignment::apply(const geometry::Pose& pose) const {
   return aligned;
 }
 
+Alignment Alignment::inverse() const {
+  Alignment inverted;
+  inverted.rotation = rotation.transpose();
+  inverted.scale = 1.0 / scale;
+  inverted.translation = -inverted.scale * (inverted.rotation * translation);
+  return inverted;
+}
+
 Eigen::Matrix4d Alignment::matrix() const {
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   m.topLeftCorner<3, 3>() = scale * rotation;

@@ -33,6 +33,8 @@ struct Alignment {
   [[nodiscard]] geometry::Pose apply(const geometry::Pose& pose) const;
   // Homogeneous 4x4 matrix [scale * rotation, translation; 0 0 0 1].
   [[nodiscard]] Eigen::Matrix4d matrix() const;
+  // The similarity that undoes this one (scale must not be zero).
+  [[nodiscard]] Alignment inverse() const;
 };
 
 // The alignment that maps the `source` points (3xN) onto the `target` points (3xN, same order)

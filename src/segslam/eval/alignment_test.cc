@@ -44,6 +44,14 @@ TEST(Alignment, Se3RecoversAKnownRigidTransform) {
   EXPECT_LT(largestError(alignment, source, target), 1e-12);
 }
 
+TEST(Alignment, InverseUndoesASimilarity) {
+  const Alignment alignment{knownRotation(), Eigen::Vector3d(0.3, -1.2, 4.0), 2.5};
+  const Eigen::Vector3d point(0.7, 0.1, -3.0);
+  EXPECT_TRUE(alignment.inverse().apply(alignment.apply(point)).isApprox(point, 1e-12));
+  EXPECT_TRUE((alignment.inverse().matrix() * alignment.matrix())
+                  .isApprox(Eigen::Matrix4d::Identity(), 1e-12));
+}
+
 TEST(Alignment, Sim3RecoversAKnownSimilarity) {
   const auto source = randomPoints(50);
   const Eigen::Vector3d t(-0.5, 0.1, 0.9);

@@ -57,4 +57,16 @@ AteResult evaluateAte(const core::Trajectory& ground_truth, const core::Trajecto
   return result;
 }
 
+core::Trajectory groundTruthInEstimateFrame(const core::Trajectory& ground_truth,
+                                            const AteResult& ate, const AteOptions& options) {
+  Alignment to_estimate = ate.alignment.inverse();
+  to_estimate.scale /= options.scale;
+  to_estimate.translation /= options.scale;
+  core::Trajectory moved;
+  for (const auto& pose : ground_truth.poses()) {
+    moved.append(pose.timestamp, to_estimate.apply(pose.T_wc));
+  }
+  return moved;
+}
+
 }  // namespace segslam::eval

@@ -44,4 +44,9 @@ struct AteResult {
 AteResult evaluateAte(const core::Trajectory& ground_truth, const core::Trajectory& estimate,
                       const AteOptions& options = {});
 
+// The ground truth moved into the estimate's frame by undoing the ATE alignment (and the
+// estimate scale), so that it overlays the raw estimate, e.g. in the map viewer.
+core::Trajectory groundTruthInEstimateFrame(const core::Trajectory& ground_truth,
+                                            const AteResult& ate, const AteOptions& options);
+
 }  // namespace segslam::eval

@@ -106,6 +106,18 @@ TEST(Ate, StatisticsCoverTheMatchedPoses) {
   EXPECT_DOUBLE_EQ(stats.max, 3.0);
 }
 
+TEST(Ate, GroundTruthInEstimateFrameOverlaysTheEstimate) {
+  const auto gt = fixtures::wigglyPath(30);
+  geometry::Pose offset = fixtures::poseAt({0.4, -1.0, 2.0}, 35.0);
+  const auto est = fixtures::transformed(gt, offset);
+  const AteOptions options{.scale = 0.5, .alignment = AlignmentMethod::kSim3};
+  const auto moved = groundTruthInEstimateFrame(gt, evaluateAte(gt, est, options), options);
+  ASSERT_EQ(moved.size(), est.size());
+  for (std::size_t k = 0; k < est.size(); ++k) {
+    EXPECT_TRUE(moved[k].T_wc.isApprox(est[k].T_wc, 1e-9)) << "pose " << k;
+  }
+}
+
 TEST(Ate, FewerThanTwoMatchesIsAnError) {
   const auto gt = alongX({0.0, 1.0}, {0.0, 1.0});
   const auto est = alongX({1.0, 5.0}, {0.0, 1.0});

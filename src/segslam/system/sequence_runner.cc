@@ -82,7 +82,12 @@ void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
   evaluation.ate = eval::evaluateAte(evaluation.ground_truth, estimate, options.evaluation.ate);
   evaluation.rpe = eval::evaluateRpe(evaluation.ground_truth, estimate, options.evaluation.rpe);
   eval::writeEvaluationJson(out_dir / "evaluation.json", evaluation);
+  io::writeTumTrajectory(out_dir / "GroundTruthAligned.txt",
+                         eval::groundTruthInEstimateFrame(evaluation.ground_truth, evaluation.ate,
+                                                          options.evaluation.ate),
+                         "ground truth in the estimate's frame (inverse of the ATE alignment)");
   summary.outputs.push_back(out_dir / "evaluation.json");
+  summary.outputs.push_back(out_dir / "GroundTruthAligned.txt");
   for (auto& plot : eval::writeEvaluationPlots(out_dir / "plots", evaluation)) {
     summary.outputs.push_back(plot);
   }

@@ -49,7 +49,7 @@ TEST(SequenceRunner, StaticSyntheticSequenceIsTrackedToMillimetres) {
   EXPECT_GE(summary.keyframes, 1u);
   EXPECT_LT(ateRmse(summary), 0.005);
   for (const char* file : {"CameraTrajectory.txt", "KeyFrameTrajectory.txt", "frame_log.csv",
-                           "summary.json", "evaluation.json"}) {
+                           "summary.json", "evaluation.json", "GroundTruthAligned.txt"}) {
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "run" / file)) << file;
   }
 }

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace segslam::viewer {
+
+// One entry of map/objects.json: a segmented object with its own point cloud.
+struct MapObject {
+  std::string id;
+  std::string label;
+  int instance = 0;
+  bool dynamic = false;
+  // Path of the object's PLY relative to the run folder (objects.json names it relative to map/).
+  std::filesystem::path file;
+  // The entry as written, passed on to the page (centroid, bounding box, point count...).
+  nlohmann::json attributes;
+};
+
+struct MapContents {
+  std::optional<std::filesystem::path> static_cloud;   // map/static.ply
+  std::optional<std::filesystem::path> dynamic_cloud;  // map/dynamic.ply
+  std::optional<double> voxel_size;
+  std::vector<MapObject> objects;
+};
+
+// What a `segslam run` output folder offers the viewer; every path is relative to the folder.
+struct RunContents {
+  std::filesystem::path run_dir;
+  std::optional<std::filesystem::path> estimate;      // CameraTrajectory.txt
+  std::optional<std::filesystem::path> keyframes;     // KeyFrameTrajectory.txt
+  std::optional<std::filesystem::path> ground_truth;  // GroundTruthAligned.txt
+  std::optional<MapContents> map;                     // absent when the run has no map/ folder
+};
+
+// Looks at a run folder. Throws util::Error when the folder is missing or map/objects.json is
+// malformed or names an object file that does not exist.
+RunContents describeRun(const std::filesystem::path& run_dir);
+
+// The description the page loads from /api/run: file entries become URLs under `url_prefix`
+// (null when absent).
+nlohmann::json runContentsJson(const RunContents& contents, const std::string& url_prefix);
+
+}  // namespace segslam::viewer

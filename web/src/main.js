@@ -1,0 +1,269 @@
+// The segslam map viewer: loads a run's description from /api/run, then its point clouds and
+// trajectories, and draws them with three.js. window.segslamViewer is the hook the browser test
+// uses to wait for the map and read what is drawn.
+import * as THREE from "three";
+import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
+import { parsePly } from "./ply.js";
+import { parseTum } from "./tum.js";
+
+const COLOURS = { static: 0x9aa0aa, estimate: 0xff8c1a, ground_truth: 0x3ad17a, keyframes: 0x4aa3ff, dynamic: 0xff3b6b };
+const LABEL_PALETTE = [0xe6194b, 0x3cb44b, 0xffe119, 0x4363d8, 0xf58231, 0x911eb4, 0x46f0f0,
+  0xf032e6, 0xbcf60c, 0xfabebe, 0x008080, 0xe6beff, 0x9a6324, 0xaaffc3, 0x808000, 0xffd8b1];
+
+const view = document.getElementById("view");
+const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+renderer.setPixelRatio(window.devicePixelRatio);
+view.appendChild(renderer.domElement);
+const scene = new THREE.Scene();
+scene.background = new THREE.Color(0x15171c);
+const camera = new THREE.PerspectiveCamera(55, 1, 0.01, 500);
+const controls = new OrbitControls(camera, renderer.domElement);
+// Camera frames are x right, y down, z forward; turning the world half a turn about x shows the
+// first camera's view upright and looking into the screen.
+const world = new THREE.Group();
+world.rotation.x = Math.PI;
+scene.add(world);
+
+const layers = new Map();   // name -> { object, points, checkbox }
+const objects = new Map();  // id -> { label, cloud, box, points }
+const state = { ready: false, error: null, run: null };
+
+function render() {
+  renderer.render(scene, camera);
+}
+
+function resize() {
+  const { clientWidth: width, clientHeight: height } = view;
+  renderer.setSize(width, height);
+  camera.aspect = width / Math.max(height, 1);
+  camera.updateProjectionMatrix();
+  render();
+}
+
+async function fetchOk(url, kind) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+  return kind === "json" ? response.json() : kind === "text" ? response.text() : response.arrayBuffer();
+}
+
+function pointCloud(ply, size, tint) {
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute("position", new THREE.BufferAttribute(ply.positions, 3));
+  const coloured = !tint && ply.colours;
+  if (coloured) geometry.setAttribute("color", new THREE.BufferAttribute(ply.colours, 3));
+  const material = new THREE.PointsMaterial({ size, sizeAttenuation: false, vertexColors: !!coloured });
+  if (!coloured) material.color = new THREE.Color(tint ?? 0xcccccc);
+  return new THREE.Points(geometry, material);
+}
+
+function trajectoryLine(poses, colour) {
+  const positions = new Float32Array(poses.flatMap((pose) => pose.position));
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute("position", new THREE.BufferAttribute(positions, 3));
+  return new THREE.Line(geometry, new THREE.LineBasicMaterial({ color: colour }));
+}
+
+function keyframeMarkers(poses) {
+  const positions = new Float32Array(poses.flatMap((pose) => pose.position));
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute("position", new THREE.BufferAttribute(positions, 3));
+  return new THREE.Points(geometry, new THREE.PointsMaterial({ size: 7, sizeAttenuation: false, color: COLOURS.keyframes }));
+}
+
+// Labels get palette colours in alphabetical order, so a run's labels stay distinct.
+const labelColours = new Map();
+
+function labelColour(label) {
+  return labelColours.get(label) ?? 0xcccccc;
+}
+
+function assignLabelColours(labels) {
+  [...new Set(labels)].sort().forEach((label, index) => {
+    labelColours.set(label, LABEL_PALETTE[index % LABEL_PALETTE.length]);
+  });
+}
+
+function swatch(colour) {
+  const span = document.createElement("span");
+  span.className = "swatch";
+  span.style.background = `#${colour.toString(16).padStart(6, "0")}`;
+  return span;
+}
+
+function checkboxRow(text, colour, onChange, attributes = {}) {
+  const label = document.createElement("label");
+  const box = document.createElement("input");
+  box.type = "checkbox";
+  box.checked = true;
+  for (const [key, value] of Object.entries(attributes)) box.dataset[key] = value;
+  box.addEventListener("change", () => onChange(box.checked));
+  label.append(box);
+  if (colour !== null) label.append(swatch(colour));
+  label.append(text);
+  return { label, box };
+}
+
+function addLayer(name, text, object, points, colour) {
+  world.add(object);
+  const row = checkboxRow(text, colour, (on) => {
+    object.visible = on;
+    update();
+  }, { layer: name });
+  document.getElementById("layers").append(row.label);
+  layers.set(name, { object, points, checkbox: row.box });
+}
+
+function addObjectControls() {
+  const container = document.getElementById("objects");
+  const byLabel = new Map();
+  for (const [id, entry] of objects) {
+    if (!byLabel.has(entry.label)) byLabel.set(entry.label, []);
+    byLabel.get(entry.label).push(id);
+  }
+  if (byLabel.size) container.replaceChildren();
+  for (const [label, ids] of [...byLabel].sort(([a], [b]) => a.localeCompare(b))) {
+    const instances = document.createElement("div");
+    instances.className = "instances";
+    const boxes = [];
+    const group = checkboxRow(`${label} (${ids.length})`, labelColour(label), (on) => {
+      for (const box of boxes) box.checked = on;
+      for (const id of ids) setObjectVisible(id, on);
+      update();
+    }, { label });
+    const syncGroup = () => {
+      const shown = boxes.filter((box) => box.checked).length;
+      group.box.checked = shown === boxes.length;
+      group.box.indeterminate = shown > 0 && shown < boxes.length;
+    };
+    for (const id of ids) {
+      const { points, dynamic } = objects.get(id);
+      const row = checkboxRow(`${id}${dynamic ? " (dynamic)" : ""} `, null, (on) => {
+        setObjectVisible(id, on);
+        syncGroup();
+        update();
+      }, { object: id });
+      const count = document.createElement("span");
+      count.className = "count";
+      count.textContent = points.toLocaleString();
+      row.label.append(count);
+      boxes.push(row.box);
+      instances.append(row.label);
+    }
+    container.append(group.label, instances);
+  }
+}
+
+function setObjectVisible(id, on) {
+  const entry = objects.get(id);
+  entry.cloud.visible = on;
+  entry.box.visible = on && boxesShown();
+}
+
+function boxesShown() {
+  return !layers.has("boxes") || layers.get("boxes").object.visible;
+}
+
+function stats() {
+  const visible = (name) => (layers.has(name) && layers.get(name).object.visible ? layers.get(name).points : 0);
+  const labels = {};
+  let objectPoints = 0;
+  for (const entry of objects.values()) {
+    const shown = entry.cloud.visible ? entry.points : 0;
+    labels[entry.label] = (labels[entry.label] ?? 0) + shown;
+    objectPoints += shown;
+  }
+  const result = { static: visible("static"), dynamic: visible("dynamic"), objects: objectPoints, labels };
+  result.total = result.static + result.dynamic + result.objects;
+  result.trajectories = {
+    estimate: visible("estimate"), ground_truth: visible("ground_truth"), keyframes: visible("keyframes"),
+  };
+  return result;
+}
+
+function update() {
+  for (const entry of objects.values()) entry.box.visible = entry.cloud.visible && boxesShown();
+  const s = stats();
+  const parts = [`${s.static.toLocaleString()} static`, `${s.dynamic.toLocaleString()} dynamic`,
+    `${s.objects.toLocaleString()} on objects`];
+  document.getElementById("status").textContent = state.run?.map
+    ? `${s.total.toLocaleString()} points drawn (${parts.join(", ")})`
+    : `${s.trajectories.estimate} poses, ${s.trajectories.keyframes} keyframes drawn`;
+  render();
+}
+
+function fitCamera() {
+  const box = new THREE.Box3().setFromObject(world);
+  if (box.isEmpty()) return;
+  const centre = box.getCenter(new THREE.Vector3());
+  const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 0.1);
+  // From behind and above the first camera, close enough for the map to fill the view.
+  camera.position.copy(centre).add(new THREE.Vector3(0.3, 0.7, 1.2).normalize().multiplyScalar(radius * 1.7));
+  camera.near = radius / 100;
+  camera.far = radius * 100;
+  camera.updateProjectionMatrix();
+  controls.target.copy(centre);
+  controls.update();
+}
+
+async function loadTrajectories(trajectories) {
+  const entries = [["estimate", "Estimated trajectory"], ["ground_truth", "Ground truth (aligned)"],
+    ["keyframes", "Keyframes"]];
+  for (const [name, text] of entries) {
+    if (!trajectories[name]) continue;
+    const poses = parseTum(await fetchOk(trajectories[name], "text"), trajectories[name]);
+    const object = name === "keyframes" ? keyframeMarkers(poses) : trajectoryLine(poses, COLOURS[name]);
+    addLayer(name, `${text} (${poses.length})`, object, poses.length, COLOURS[name]);
+  }
+}
+
+async function loadMap(map) {
+  const size = 2;
+  if (map.static) {
+    const ply = parsePly(await fetchOk(map.static, "buffer"), map.static);
+    addLayer("static", `Static map (${ply.count.toLocaleString()})`, pointCloud(ply, size), ply.count, COLOURS.static);
+  }
+  if (map.dynamic) {
+    const ply = parsePly(await fetchOk(map.dynamic, "buffer"), map.dynamic);
+    addLayer("dynamic", `Dynamic layer (${ply.count.toLocaleString()})`, pointCloud(ply, size + 1, COLOURS.dynamic),
+      ply.count, COLOURS.dynamic);
+  }
+  const boxes = new THREE.Group();
+  assignLabelColours(map.objects.map((object) => object.label));
+  for (const object of map.objects) {
+    const ply = parsePly(await fetchOk(object.url, "buffer"), object.url);
+    const colour = labelColour(object.label);
+    const cloud = pointCloud(ply, size + 1, colour);
+    const bounds = new THREE.Box3().setFromBufferAttribute(cloud.geometry.getAttribute("position"));
+    const box = new THREE.Box3Helper(bounds, colour);
+    world.add(cloud);
+    boxes.add(box);
+    objects.set(object.id, { label: object.label, dynamic: object.dynamic, cloud, box, points: ply.count });
+  }
+  if (map.objects.length) addLayer("boxes", "Object boxes", boxes, 0, null);
+  addObjectControls();
+}
+
+async function load() {
+  const run = await fetchOk("/api/run", "json");
+  state.run = run;
+  document.getElementById("run-name").textContent = run.name;
+  document.title = `segslam: ${run.name}`;
+  if (!run.map) document.getElementById("notice").textContent = "no map in this run (trajectories only)";
+  await loadTrajectories(run.trajectories);
+  if (run.map) await loadMap(run.map);
+  fitCamera();
+  update();
+}
+
+window.segslamViewer = { state, stats };
+window.addEventListener("resize", resize);
+controls.addEventListener("change", render);
+resize();
+load()
+  .catch((error) => {
+    state.error = String(error.message ?? error);
+    document.getElementById("status").textContent = `error: ${state.error}`;
+  })
+  .finally(() => {
+    state.ready = true;
+  });
