@@ -12,5 +12,7 @@ void registerEvalCommand(CLI::App& app);
 // `eval masks`, a sub-command of `eval`.
 void registerEvalMasksCommand(CLI::App& eval);
 void registerSynthCommand(CLI::App& app);
+// `vocab train` and `vocab info`: the bag-of-words vocabulary.
+void registerVocabCommand(CLI::App& app);
 
 }  // namespace segslam::apps
