@@ -16,31 +16,40 @@ cv::Mat toBgr(const cv::Mat& gray) {
   return bgr;
 }
 
+// Few shapes and a feature budget above the number of corners: the extractor then keeps every
+// corner, so that what it finds away from a change does not depend on the change.
+constexpr int kShapes = 200;
+
 feature::OrbExtractorOptions testOrbOptions() {
   feature::OrbExtractorOptions options;
-  options.num_features = 800;
+  options.num_features = 20000;
   options.num_levels = 4;
   return options;
 }
 
-// Two scenes that differ only inside `changed`, and the vocabulary trained on both.
+// Two scenes that differ only inside `changed`, and a vocabulary trained on them and others.
 class BowPlaceMethodTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    scene_ = feature::testing::texturedImage(size_, 5);
+    scene_ = feature::testing::texturedImage(size_, 5, kShapes);
     changed_scene_ = scene_.clone();
-    feature::testing::texturedImage(changed_.size(), 6).copyTo(changed_scene_(changed_));
+    feature::testing::texturedImage(changed_.size(), 6, kShapes).copyTo(changed_scene_(changed_));
+    // Unrelated scenes too: words in every training image would get an IDF weight of 0.
+    std::vector<cv::Mat> training{scene_, changed_scene_};
+    for (std::uint64_t seed = 10; seed < 22; ++seed) {
+      training.push_back(feature::testing::texturedImage(size_, seed, kShapes));
+    }
     feature::OrbExtractor extractor(testOrbOptions());
     std::vector<cv::Mat> sets;
-    for (const cv::Mat& image : {scene_, changed_scene_}) {
+    for (const cv::Mat& image : training) {
       std::vector<cv::KeyPoint> keypoints;
       cv::Mat descriptors;
       extractor.extract(image, cv::Mat(), keypoints, descriptors);
       sets.push_back(descriptors);
     }
     VocabularyOptions options;
-    options.k = 6;
-    options.depth = 3;
+    options.k = 10;
+    options.depth = 4;
     vocabulary_ = std::make_shared<Vocabulary>(Vocabulary::train(sets, options));
   }
 
