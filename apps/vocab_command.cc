@@ -37,10 +37,17 @@ std::vector<place::TrainingSource> trainingSources(const VocabTrainArguments& ar
   return sources;
 }
 
+// The folder's own name: the file records what it was trained on without this machine's paths.
+std::string folderName(const std::filesystem::path& folder) {
+  auto normal = folder.lexically_normal();
+  if (normal.filename().empty()) normal = normal.parent_path();
+  return normal.filename().string();
+}
+
 std::string describeTraining(const VocabTrainArguments& args) {
   std::string sources;
-  for (const auto& folder : args.image_folders) sources += " images:" + folder.string();
-  for (const auto& folder : args.datasets) sources += " dataset:" + folder.filename().string();
+  for (const auto& folder : args.image_folders) sources += " images:" + folderName(folder);
+  for (const auto& folder : args.datasets) sources += " dataset:" + folderName(folder);
   return fmt::format("every {} frames, {} ORB features, k {}, depth {}, seed {};{}", args.every,
                      args.features, args.vocabulary.k, args.vocabulary.depth, args.vocabulary.seed,
                      sources);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders the synthetic sequences the shipped bag-of-words vocabulary
-# (config/vocabulary/orb_synth_k10_d5.bin) is trained on; see docs/vocabulary.md. Deterministic:
+# (config/vocabulary/orb_synth_k10_d4.bin) is trained on; see docs/vocabulary.md. Deterministic:
 # the same segslam build renders the same images.
 #
 #   scripts/render_vocabulary_sequences.sh SEGSLAM_BINARY OUT_DIR

@@ -103,6 +103,6 @@ class Vocabulary {
 [[nodiscard]] OrbDescriptor majorityCentre(const std::vector<const std::uint8_t*>& descriptors);
 
 // The vocabulary shipped in config/, relative to the config folder.
-inline constexpr const char* kDefaultVocabularyFile = "vocabulary/orb_k10_d5.bin";
+inline constexpr const char* kDefaultVocabularyFile = "vocabulary/orb_synth_k10_d4.bin";
 
 }  // namespace segslam::place
