@@ -149,6 +149,15 @@ TEST(VocabularyTest, RejectsBadOptionsAndInput) {
                std::invalid_argument);
 }
 
+TEST(VocabularyTest, ShippedVocabularyLoads) {
+  const auto file = std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config" / kDefaultVocabularyFile;
+  const auto vocabulary = Vocabulary::load(file);
+  EXPECT_EQ(vocabulary.k(), 10);
+  EXPECT_EQ(vocabulary.depth(), 4);
+  EXPECT_GT(vocabulary.numWords(), 5000U);
+  EXPECT_GT(vocabulary.trainingSummary().descriptors, 100000U);
+}
+
 class VocabularyFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
