@@ -51,7 +51,7 @@ for candidate in "${candidates[@]}"; do
     start=$(date +%s.%N)
     # shellcheck disable=SC2086
     "$segslam" --log-level warn vocab train $arguments --out "$file"
-    echo "$(date +%s.%N) - $start" | bc > "$file.seconds"
+    python3 -c "import sys; print(float(sys.argv[1]) - float(sys.argv[2]))" "$(date +%s.%N)" "$start" > "$file.seconds"
   fi
   seconds=$(cat "$file.seconds")
   "$evaluate" "$file" "$shared/data/tum_fr1_xyz_300" 10 |
