@@ -13,5 +13,7 @@ void registerEvalCommand(CLI::App& app);
 void registerEvalMasksCommand(CLI::App& eval);
 void registerSynthCommand(CLI::App& app);
 void registerViewCommand(CLI::App& app);
+// `vocab train` and `vocab info`: the bag-of-words vocabulary.
+void registerVocabCommand(CLI::App& app);
 
 }  // namespace segslam::apps

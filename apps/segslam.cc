@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   segslam::apps::registerEvalCommand(app);
   segslam::apps::registerSynthCommand(app);
   segslam::apps::registerViewCommand(app);
+  segslam::apps::registerVocabCommand(app);
 
   try {
     app.parse(argc, argv);
