@@ -28,10 +28,10 @@ std::optional<CnnFeatureExtractor> tinyDarknet() {
                     "SEGSLAM_SHARED_DIR or put shared/ beside the project)";      \
   }
 
-std::unique_ptr<PlaceDescriptorMethod> methodNamed(
-    std::vector<std::unique_ptr<PlaceDescriptorMethod>>& methods, const std::string& name) {
-  for (auto& method : methods) {
-    if (method->name() == name) return std::move(method);
+const PlaceDescriptorMethod* methodNamed(
+    const std::vector<std::unique_ptr<PlaceDescriptorMethod>>& methods, const std::string& name) {
+  for (const auto& method : methods) {
+    if (method->name() == name) return method.get();
   }
   ADD_FAILURE() << "no method " << name;
   return nullptr;
@@ -73,8 +73,8 @@ TEST(CnnPlaceMethod, PooledUnionMaskIgnoresAMaskedRectangle) {
   for (auto& method : methods) method->add(masked);
   EXPECT_EQ(bank->size(), 2u);  // the network ran once per image for all methods
   for (const std::string layer : {"pool1", "pool2", "pool3", "pool4", "conv"}) {
-    const auto pooled = methodNamed(methods, "cnn:" + layer + ":pooled");
-    ASSERT_TRUE(pooled);
+    const auto* pooled = methodNamed(methods, "cnn:" + layer + ":pooled");
+    ASSERT_NE(pooled, nullptr);
     const double with_mask = pooled->similarity(0, 1, true);
     EXPECT_GT(with_mask, 0.98) << layer;
     EXPECT_GT(with_mask, pooled->similarity(0, 1, false)) << layer;
