@@ -83,10 +83,12 @@ void setMaskSources(EvalLoopsOptions& options, const io::TumDataset& dataset) {
 std::vector<std::string> cnnNotes(const std::vector<std::shared_ptr<place::CnnFeatureBank>>& banks,
                                   const std::filesystem::path& model_file) {
   if (banks.empty() || banks.front()->size() == 0) return {};
-  double total_ms = 0.0;
+  double wall_ms = 0.0;
+  double cpu_ms = 0.0;
   std::size_t images = 0;
   for (const auto& bank : banks) {
-    total_ms += bank->meanExtractionMilliseconds() * static_cast<double>(bank->size());
+    wall_ms += bank->meanExtractionMilliseconds() * static_cast<double>(bank->size());
+    cpu_ms += bank->meanExtractionCpuMilliseconds() * static_cast<double>(bank->size());
     images += bank->size();
   }
   const auto& bank = *banks.front();

@@ -5,7 +5,7 @@
 # writes bench/results/loops.md (the AUC tables), loops.json and the PR plots
 # (loops_<sequence>.svg, and .png where rsvg-convert exists).
 #
-#   bench/loop_detection.sh [--build DIR] [--out DIR] [--every N]
+#   bench/loop_detection.sh [--build DIR] [--out DIR] [--every N (default 5)]
 #
 # Needs ../shared beside the project (or SEGSLAM_SHARED_DIR) for the real sequences and models.
 set -euo pipefail
@@ -13,7 +13,7 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$root/build"
 out="$root/out/bench_loops"
-every=10
+every=5
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --build) build="$2"; shift 2 ;;

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -83,6 +84,7 @@ void CnnFeatureBank::add(std::size_t index, const PlaceImage& image) {
 
 CnnImageFeatures CnnFeatureBank::compute(const PlaceImage& image) {
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
   const std::vector<cv::Mat> blobs = extractor_.extract(image.bgr);
   CnnImageFeatures features;
   for (std::size_t l = 0; l < blobs.size(); ++l) {
@@ -91,6 +93,7 @@ CnnImageFeatures CnnFeatureBank::compute(const PlaceImage& image) {
   features.static_mask = storedMask(image.static_mask);
   extraction_ms_ +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  extraction_cpu_ms_ += 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   return features;
 }
 
@@ -104,6 +107,10 @@ std::size_t CnnFeatureBank::bytesPerImage() const {
 
 double CnnFeatureBank::meanExtractionMilliseconds() const {
   return images_.empty() ? 0.0 : extraction_ms_ / static_cast<double>(images_.size());
+}
+
+double CnnFeatureBank::meanExtractionCpuMilliseconds() const {
+  return images_.empty() ? 0.0 : extraction_cpu_ms_ / static_cast<double>(images_.size());
 }
 
 CnnPlaceMethod::CnnPlaceMethod(std::shared_ptr<CnnFeatureBank> bank, std::size_t layer,

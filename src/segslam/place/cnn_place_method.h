@@ -40,7 +40,10 @@ class CnnFeatureBank {
   [[nodiscard]] const std::vector<cv::Size>& grids() const { return grids_; }
   [[nodiscard]] const std::vector<int>& channels() const { return channels_; }
   [[nodiscard]] std::size_t bytesPerImage() const;
+  // Wall time, and processor time of all the process's threads: on a machine shared with other
+  // work the latter tells what the extraction costs.
   [[nodiscard]] double meanExtractionMilliseconds() const;
+  [[nodiscard]] double meanExtractionCpuMilliseconds() const;
 
  private:
   CnnImageFeatures compute(const PlaceImage& image);
@@ -51,6 +54,7 @@ class CnnFeatureBank {
   std::vector<CnnImageFeatures> images_;
   std::vector<const unsigned char*> sources_;  // pixels each image was computed from
   double extraction_ms_ = 0.0;
+  double extraction_cpu_ms_ = 0.0;
 };
 
 enum class CnnVariant {

@@ -99,6 +99,11 @@ std::vector<std::string> methodNames(const LoopEvaluation& evaluation) {
   return names;
 }
 
+// The pooled variant of a layer is drawn dashed in the colour of the layer's flattened one.
+std::string baseMethodName(const std::string& method) {
+  return method.substr(0, method.find(":pooled"));
+}
+
 std::string formatAp(double value) {
   return std::isfinite(value) ? fmt::format("{:.3f}", value) : "n/a";
 }
@@ -220,7 +225,12 @@ void writeLoopReport(const std::filesystem::path& out_dir, const LoopEvaluation&
   constexpr std::array<const char*, 12> kColours = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
                                                     "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
                                                     "#bcbd22", "#17becf", "#000000", "#aec7e8"};
-  const std::vector<std::string> methods = methodNames(evaluation);
+  std::vector<std::string> bases;
+  for (const auto& method : methodNames(evaluation)) {
+    if (std::find(bases.begin(), bases.end(), baseMethodName(method)) == bases.end()) {
+      bases.push_back(baseMethodName(method));
+    }
+  }
   std::vector<eval::Plot> plots;
   for (const auto& column : evaluation.mask_columns) {
     eval::Plot plot{fmt::format("Precision-recall, {}", columnTitle(column)), "recall",
@@ -228,12 +238,12 @@ void writeLoopReport(const std::filesystem::path& out_dir, const LoopEvaluation&
     for (const auto& result : evaluation.results) {
       if (result.masks != column) continue;
       const auto colour_index =
-          std::find(methods.begin(), methods.end(), result.method) - methods.begin();
+          std::find(bases.begin(), bases.end(), baseMethodName(result.method)) - bases.begin();
       eval::PlotSeries series;
       series.label =
           fmt::format("{} ({})", result.method, formatAp(result.curve.average_precision));
       series.colour = kColours[static_cast<std::size_t>(colour_index) % kColours.size()];
-      series.dashed = result.method.find(":pooled") != std::string::npos;
+      series.dashed = baseMethodName(result.method) != result.method;
       for (const auto& point : result.curve.points) {
         series.x.push_back(point.recall);
         series.y.push_back(point.precision);
