@@ -11,6 +11,8 @@ void registerCheckCommand(CLI::App& app);
 void registerEvalCommand(CLI::App& app);
 // `eval masks`, a sub-command of `eval`.
 void registerEvalMasksCommand(CLI::App& eval);
+// `eval loops`, a sub-command of `eval`.
+void registerEvalLoopsCommand(CLI::App& eval);
 void registerSynthCommand(CLI::App& app);
 void registerViewCommand(CLI::App& app);
 // `vocab train` and `vocab info`: the bag-of-words vocabulary.

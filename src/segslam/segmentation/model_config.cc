@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 
 #include "segslam/util/error.h"
+#include "segslam/util/model_file.h"
 #include "segslam/util/text_file.h"
 #include "segslam/util/yaml_document.h"
 
@@ -144,27 +144,7 @@ ModelConfig parseModelConfig(std::string_view text, const std::filesystem::path&
 std::filesystem::path resolveModelFile(const ModelConfig& config,
                                        const std::filesystem::path& config_file,
                                        const std::optional<std::filesystem::path>& override_file) {
-  if (override_file) {
-    if (!std::filesystem::is_regular_file(*override_file)) {
-      util::failAt(*override_file, "segmentation model file not found");
-    }
-    return *override_file;
-  }
-  std::vector<std::filesystem::path> tried;
-  tried.push_back(config.model.is_absolute() ? config.model
-                                             : config_file.parent_path() / config.model);
-  if (const char* dir = std::getenv("SEGSLAM_MODEL_DIR"); dir && *dir) {
-    tried.push_back(std::filesystem::path(dir) / config.model.filename());
-  }
-  for (const auto& candidate : tried) {
-    if (std::filesystem::is_regular_file(candidate)) return candidate;
-  }
-  std::vector<std::string> names;
-  for (const auto& candidate : tried) names.push_back(candidate.string());
-  util::failAt(config_file,
-               fmt::format("segmentation model '{}' not found (tried {}; pass --model FILE or set "
-                           "SEGSLAM_MODEL_DIR)",
-                           config.model.string(), fmt::join(names, ", ")));
+  return util::findModelFile(config.model, config_file, override_file, "segmentation model");
 }
 
 }  // namespace segslam::segmentation

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Loop detection with and without the union mask: runs `segslam eval loops` (every CNN layer, the
+# method's flattened descriptor and our masked pooling; oracle masks and our semantic masks) on a
+# synthetic closed lap with two walking people, tum_fr1_xyz_300 and tum_fr1_xyz_300_walker, and
+# writes bench/results/loops.md (the AUC tables), loops.json and the PR plots
+# (loops_<sequence>.svg, and .png where rsvg-convert exists).
+#
+#   bench/loop_detection.sh [--build DIR] [--out DIR] [--every N (default 5)]
+#
+# Needs ../shared beside the project (or SEGSLAM_SHARED_DIR) for the real sequences and models.
+set -euo pipefail
+
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="$root/build"
+out="$root/out/bench_loops"
+every=5
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --build) build="$2"; shift 2 ;;
+    --out) out="$2"; shift 2 ;;
+    --every) every="$2"; shift 2 ;;
+    *) echo "loop_detection.sh: unknown option '$1'" >&2; exit 2 ;;
+  esac
+done
+segslam="$build/segslam"
+[[ -x "$segslam" ]] || { echo "loop_detection.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
+shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
+[[ -d "$shared/data" ]] || { echo "loop_detection.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+results="$root/bench/results"
+mkdir -p "$out" "$results"
+
+[[ -f "$out/synth_loop/groundtruth.txt" ]] ||
+  "$segslam" synth --path loop --people 2 --frames 300 --seed 1 --out "$out/synth_loop" >/dev/null
+
+# name | dataset
+sequences=(
+  "synth_loop|$out/synth_loop"
+  "tum_fr1_xyz_300|$shared/data/tum_fr1_xyz_300"
+  "tum_fr1_xyz_300_walker|$shared/data/tum_fr1_xyz_300_walker"
+)
+
+{
+  echo "# Loop detection: AUC with and without the union mask"
+  echo
+  echo "\`bench/loop_detection.sh --every $every\`: \`segslam eval loops\` with the default thresholds"
+  echo "(0.3 m, 20 deg, pairs at least 5 s apart). Machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores."
+  echo
+} > "$results/loops.md"
+echo "[" > "$results/loops.json"
+separator=""
+for sequence in "${sequences[@]}"; do
+  IFS='|' read -r name dataset <<< "$sequence"
+  masks=(semantic)
+  [[ -f "$dataset/mask.txt" ]] && masks=(oracle semantic)
+  echo "== $name (masks: ${masks[*]})"
+  "$segslam" --log-level warn eval loops --dataset "$dataset" --every "$every" \
+    --masks "${masks[@]}" --out "$out/$name" >/dev/null
+  cat "$out/$name/loops.md" >> "$results/loops.md"
+  echo >> "$results/loops.md"
+  { printf '%s' "$separator"; cat "$out/$name/loops.json"; } >> "$results/loops.json"
+  separator=","
+  cp "$out/$name/pr_curves.svg" "$results/loops_$name.svg"
+  if command -v rsvg-convert >/dev/null; then
+    rsvg-convert "$results/loops_$name.svg" -o "$results/loops_$name.png"
+  fi
+done
+echo "]" >> "$results/loops.json"
+cat "$results/loops.md"

@@ -1,0 +1,168 @@
+#include "segslam/place/cnn_place_method.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+#include "segslam/place/masked_similarity.h"
+#include "segslam/place/union_mask.h"
+
+namespace segslam::place {
+
+namespace {
+
+cv::Size blobGrid(const cv::Mat& blob) {
+  return blob.dims == 4 ? cv::Size(blob.size[3], blob.size[2]) : cv::Size(1, 1);
+}
+
+int blobChannels(const cv::Mat& blob) {
+  return blob.dims == 4 ? blob.size[1] : static_cast<int>(blob.total());
+}
+
+// C x cells float16 from a 1 x C x H x W (or 1 x C) blob, each channel area-averaged to `grid`.
+cv::Mat storedLayer(const cv::Mat& blob, cv::Size grid) {
+  const int channels = blobChannels(blob);
+  const cv::Size size = blobGrid(blob);
+  cv::Mat stored(channels, grid.area(), CV_32F);
+  for (int c = 0; c < channels; ++c) {
+    const cv::Mat plane(size, CV_32F, const_cast<float*>(blob.ptr<float>()) + c * size.area());
+    cv::Mat resized;
+    if (size == grid) {
+      resized = plane;
+    } else {
+      cv::resize(plane, resized, grid, 0, 0, cv::INTER_AREA);
+    }
+    resized.reshape(1, 1).copyTo(stored.row(c));
+  }
+  cv::Mat half;
+  stored.convertTo(half, CV_16F);
+  return half;
+}
+
+cv::Mat storedMask(const cv::Mat& static_mask) {
+  if (static_mask.empty()) return {};
+  cv::Mat small;
+  cv::resize(static_mask, small, cv::Size(CnnFeatureBank::kMaskWidth, CnnFeatureBank::kMaskHeight),
+             0, 0, cv::INTER_AREA);
+  cv::threshold(small, small, 127, 255, cv::THRESH_BINARY);
+  return small;
+}
+
+cv::Mat asFloat(const cv::Mat& half) {
+  cv::Mat values;
+  half.convertTo(values, CV_32F);
+  return values;
+}
+
+}  // namespace
+
+CnnFeatureBank::CnnFeatureBank(CnnFeatureExtractor extractor) : extractor_(std::move(extractor)) {
+  const cv::Mat blank(config().input_size, CV_8UC3, cv::Scalar::all(0));
+  const cv::Size stored = config().stored_grid;
+  for (const auto& blob : extractor_.extract(blank)) {
+    const cv::Size size = blobGrid(blob);
+    grids_.emplace_back(std::min(size.width, stored.width), std::min(size.height, stored.height));
+    channels_.push_back(blobChannels(blob));
+  }
+}
+
+void CnnFeatureBank::add(std::size_t index, const PlaceImage& image) {
+  if (index < images_.size()) {
+    if (sources_[index] != image.bgr.data) {
+      throw std::logic_error("CNN place methods of one bank were given different images");
+    }
+    return;
+  }
+  if (index != images_.size()) throw std::logic_error("CNN place images added out of order");
+  images_.push_back(compute(image));
+  sources_.push_back(image.bgr.data);
+}
+
+CnnImageFeatures CnnFeatureBank::compute(const PlaceImage& image) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
+  const std::vector<cv::Mat> blobs = extractor_.extract(image.bgr);
+  CnnImageFeatures features;
+  for (std::size_t l = 0; l < blobs.size(); ++l) {
+    features.layers.push_back(storedLayer(blobs[l], grids_[l]));
+  }
+  features.static_mask = storedMask(image.static_mask);
+  extraction_ms_ +=
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  extraction_cpu_ms_ += 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  return features;
+}
+
+std::size_t CnnFeatureBank::bytesPerImage() const {
+  std::size_t bytes = static_cast<std::size_t>(kMaskWidth) * kMaskHeight;
+  for (std::size_t l = 0; l < grids_.size(); ++l) {
+    bytes += sizeof(cv::float16_t) * static_cast<std::size_t>(channels_[l]) * grids_[l].area();
+  }
+  return bytes;
+}
+
+double CnnFeatureBank::meanExtractionMilliseconds() const {
+  return images_.empty() ? 0.0 : extraction_ms_ / static_cast<double>(images_.size());
+}
+
+double CnnFeatureBank::meanExtractionCpuMilliseconds() const {
+  return images_.empty() ? 0.0 : extraction_cpu_ms_ / static_cast<double>(images_.size());
+}
+
+CnnPlaceMethod::CnnPlaceMethod(std::shared_ptr<CnnFeatureBank> bank, std::size_t layer,
+                               CnnVariant variant)
+    : bank_(std::move(bank)), layer_(layer), variant_(variant) {}
+
+std::string CnnPlaceMethod::name() const {
+  const std::string& layer = bank_->config().layers.at(layer_).name;
+  return variant_ == CnnVariant::kPooled ? fmt::format("cnn:{}:pooled", layer)
+                                         : fmt::format("cnn:{}", layer);
+}
+
+void CnnPlaceMethod::add(const PlaceImage& image) {
+  bank_->add(count_, image);
+  ++count_;
+}
+
+double CnnPlaceMethod::similarity(std::size_t i, std::size_t j, bool union_mask) const {
+  const CnnImageFeatures& first = bank_->image(i);
+  const CnnImageFeatures& second = bank_->image(j);
+  const cv::Size grid = bank_->grids()[layer_];
+  cv::Mat weights(grid, CV_32F, cv::Scalar(1.0));
+  if (union_mask) {
+    cv::Mat both = unionStaticMask(first.static_mask, second.static_mask);
+    if (variant_ == CnnVariant::kPooled) {
+      const double mask_pixels_per_input_pixel =
+          static_cast<double>(CnnFeatureBank::kMaskWidth) / bank_->config().input_size.width;
+      const int erosion = bank_->config().layers[layer_].erosion_px;
+      both =
+          erodeStaticMask(both, static_cast<int>(std::ceil(erosion * mask_pixels_per_input_pixel)));
+    }
+    weights = staticFraction(both, grid);
+  }
+  const cv::Mat a = asFloat(first.layers[layer_]);
+  const cv::Mat b = asFloat(second.layers[layer_]);
+  const cv::Mat row_weights = weights.reshape(1, 1);
+  if (variant_ == CnnVariant::kFlattened) return maskedCosine(a, b, row_weights);
+  return pooledMaskedCosine(a, b, row_weights, grid, bank_->config().pooling_grid);
+}
+
+std::vector<std::unique_ptr<PlaceDescriptorMethod>> makeCnnPlaceMethods(
+    const std::shared_ptr<CnnFeatureBank>& bank) {
+  std::vector<std::unique_ptr<PlaceDescriptorMethod>> methods;
+  for (std::size_t l = 0; l < bank->grids().size(); ++l) {
+    methods.push_back(std::make_unique<CnnPlaceMethod>(bank, l, CnnVariant::kFlattened));
+  }
+  for (std::size_t l = 0; l < bank->grids().size(); ++l) {
+    if (bank->grids()[l].area() > 1) {
+      methods.push_back(std::make_unique<CnnPlaceMethod>(bank, l, CnnVariant::kPooled));
+    }
+  }
+  return methods;
+}
+
+}  // namespace segslam::place

@@ -1,0 +1,86 @@
+#include "segslam/place/cnn_place_method.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "segslam/io/tum_dataset.h"
+#include "segslam/testing/test_support.h"
+
+namespace segslam::place {
+namespace {
+
+// The shipped Tiny-Darknet config with the model from ../shared/models.
+std::optional<CnnFeatureExtractor> tinyDarknet() {
+  const auto shared = testing::sharedDir();
+  if (!shared) return std::nullopt;
+  const auto model = *shared / "models/tiny_darknet_imagenet.onnx";
+  if (!std::filesystem::exists(model)) return std::nullopt;
+  const auto config_file =
+      std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config/models/tiny_darknet_imagenet.yaml";
+  return CnnFeatureExtractor(readCnnBackboneConfig(config_file), model);
+}
+
+#define SEGSLAM_REQUIRE_BACKBONE(var)                                             \
+  auto var = tinyDarknet();                                                       \
+  if (!var) {                                                                     \
+    GTEST_SKIP() << "../shared/models/tiny_darknet_imagenet.onnx not found (set " \
+                    "SEGSLAM_SHARED_DIR or put shared/ beside the project)";      \
+  }
+
+const PlaceDescriptorMethod* methodNamed(
+    const std::vector<std::unique_ptr<PlaceDescriptorMethod>>& methods, const std::string& name) {
+  for (const auto& method : methods) {
+    if (method->name() == name) return method.get();
+  }
+  ADD_FAILURE() << "no method " << name;
+  return nullptr;
+}
+
+TEST(CnnPlaceMethod, TinyDarknetGivesTheDocumentedLayerShapes) {
+  SEGSLAM_REQUIRE_BACKBONE(extractor);
+  const cv::Mat image(480, 640, CV_8UC3, cv::Scalar(90, 120, 150));
+  const std::vector<cv::Mat> blobs = extractor->extract(image);
+  const std::vector<std::vector<int>> expected = {{1, 16, 240, 320}, {1, 32, 120, 160},
+                                                  {1, 128, 60, 80},  {1, 256, 30, 40},
+                                                  {1, 128, 30, 40},  {1, 1000}};
+  ASSERT_EQ(blobs.size(), expected.size());
+  for (std::size_t l = 0; l < blobs.size(); ++l) {
+    std::vector<int> shape(blobs[l].size.p, blobs[l].size.p + blobs[l].dims);
+    EXPECT_EQ(shape, expected[l]) << "layer " << l;
+  }
+  CnnFeatureBank bank(std::move(*extractor));
+  EXPECT_EQ(bank.grids()[0], cv::Size(40, 30));
+  EXPECT_EQ(bank.grids()[5], cv::Size(1, 1));
+  EXPECT_EQ(bank.channels()[3], 256);
+}
+
+TEST(CnnPlaceMethod, PooledUnionMaskIgnoresAMaskedRectangle) {
+  SEGSLAM_REQUIRE_BACKBONE(extractor);
+  SEGSLAM_REQUIRE_SHARED(folder, "tum_fr1_xyz_300");
+  const cv::Mat frame = io::TumDataset::open(folder).loadFrame(0).rgb;
+  // The same view with a "person" pasted in: only inside the rectangle do the images differ.
+  const cv::Rect person(380, 120, 140, 300);
+  cv::Mat occluded = frame.clone();
+  cv::randu(occluded(person), cv::Scalar::all(0), cv::Scalar::all(255));
+  cv::Mat static_mask(frame.size(), CV_8UC1, cv::Scalar(255));
+  static_mask(person).setTo(0);
+  auto bank = std::make_shared<CnnFeatureBank>(std::move(*extractor));
+  auto methods = makeCnnPlaceMethods(bank);
+  const PlaceImage clear{frame, cv::Mat()};
+  const PlaceImage masked{occluded, static_mask};
+  for (auto& method : methods) method->add(clear);
+  for (auto& method : methods) method->add(masked);
+  EXPECT_EQ(bank->size(), 2u);  // the network ran once per image for all methods
+  for (const std::string layer : {"pool1", "pool2", "pool3", "pool4", "conv"}) {
+    const auto* pooled = methodNamed(methods, "cnn:" + layer + ":pooled");
+    ASSERT_NE(pooled, nullptr);
+    const double with_mask = pooled->similarity(0, 1, true);
+    // The last conv block sees further than its 16 px erosion: some of the rectangle leaks in.
+    EXPECT_GT(with_mask, layer == "conv" ? 0.95 : 0.98) << layer;
+    EXPECT_GT(with_mask, pooled->similarity(0, 1, false)) << layer;
+  }
+}
+
+}  // namespace
+}  // namespace segslam::place
