@@ -4,7 +4,9 @@
 
 #include "commands.h"
 #include "dataset_arguments.h"
+#include "segslam/place/bow_place_method.h"
 #include "segslam/place/cnn_place_method.h"
+#include "segslam/place/vocabulary.h"
 #include "segslam/system/loop_evaluation.h"
 #include "segslam/util/progress.h"
 
@@ -18,6 +20,7 @@ struct EvalLoopsOptions : DatasetArguments {
   std::string model_file;
   std::filesystem::path backbone_config;
   std::string backbone_model_file;
+  std::filesystem::path vocabulary;
   system::LoopEvaluationOptions evaluation;
 };
 
@@ -48,6 +51,12 @@ void addOptions(CLI::App& command, EvalLoopsOptions& options) {
   command.add_option("--backbone-model", options.backbone_model_file,
                      "CNN backbone file (ONNX) overriding the config's; else the config's path "
                      "or $SEGSLAM_MODEL_DIR");
+  options.vocabulary = std::filesystem::path(SEGSLAM_CONFIG_DIR) / place::kDefaultVocabularyFile;
+  command
+      .add_option("--vocabulary", options.vocabulary,
+                  "Bag-of-words vocabulary (segslam vocab train) of the bow method")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
   command.add_option("--every", options.evaluation.every, "Every Nth frame is a database image")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
@@ -113,12 +122,15 @@ void run(EvalLoopsOptions& options) {
       options.backbone_model_file.empty()
           ? std::nullopt
           : std::optional<std::filesystem::path>(options.backbone_model_file));
+  const auto vocabulary =
+      std::make_shared<const place::Vocabulary>(place::Vocabulary::load(options.vocabulary));
   std::vector<std::shared_ptr<place::CnnFeatureBank>> banks;
   const system::PlaceMethodFactory make_methods = [&] {
     banks.push_back(std::make_shared<place::CnnFeatureBank>(
         place::CnnFeatureExtractor(backbone, backbone_model)));
-    // The bag-of-words methods (bow, from a --vocabulary file) join the CNN layers here.
-    return place::makeCnnPlaceMethods(banks.back());
+    auto methods = place::makeCnnPlaceMethods(banks.back());
+    methods.insert(methods.begin(), std::make_unique<place::BowPlaceMethod>(vocabulary));
+    return methods;
   };
   const std::size_t passes = std::max<std::size_t>(1, options.masks.size());
   const std::size_t images =
