@@ -11,6 +11,9 @@ void registerCheckCommand(CLI::App& app);
 void registerEvalCommand(CLI::App& app);
 // `eval masks`, a sub-command of `eval`.
 void registerEvalMasksCommand(CLI::App& eval);
+// `eval map`, a sub-command of `eval`.
+void registerEvalMapCommand(CLI::App& eval);
+void registerMapCommand(CLI::App& app);
 void registerSynthCommand(CLI::App& app);
 
 }  // namespace segslam::apps

@@ -132,6 +132,7 @@ void registerEvalCommand(CLI::App& app) {
       "--est; further evaluations are added as sub-commands of `eval`.");
   command->require_subcommand(0, 1);
   registerEvalMasksCommand(*command);
+  registerEvalMapCommand(*command);
   auto settings = std::make_shared<TrajectoryEvalSettings>();
   addTrajectoryOptions(*command, *settings);
   command->callback([command, settings] {

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   segslam::apps::registerCheckCommand(app);
   segslam::apps::registerEvalCommand(app);
   segslam::apps::registerSynthCommand(app);
+  segslam::apps::registerMapCommand(app);
 
   try {
     app.parse(argc, argv);
