@@ -4,6 +4,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -199,6 +200,32 @@ bool nearPersonPath(const Eigen::Vector3d& p, const std::map<int, PersonTrack>& 
   return false;
 }
 
+// The rigid motion from the run's world into the ground truth's over the matched poses: the
+// rotation nearest to the sum of the per-pose rotations R_gt R_est^T (chordal mean), then the
+// mean translation. Unlike aligning positions only, it stays well defined when the camera barely
+// moves, and a tracked run's poses fix it.
+eval::Alignment poseAlignment(const core::Trajectory& ground_truth,
+                              const core::Trajectory& estimate, const eval::AteResult& ate) {
+  Eigen::Matrix3d rotation_sum = Eigen::Matrix3d::Zero();
+  for (const auto& pair : ate.pairs) {
+    rotation_sum += ground_truth[pair.gt_index].T_wc.linear() *
+                    estimate[pair.est_index].T_wc.linear().transpose();
+  }
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(rotation_sum,
+                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d correction = Eigen::Matrix3d::Identity();
+  if ((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0) correction(2, 2) = -1.0;
+  eval::Alignment alignment;
+  alignment.rotation = svd.matrixU() * correction * svd.matrixV().transpose();
+  Eigen::Vector3d translation_sum = Eigen::Vector3d::Zero();
+  for (const auto& pair : ate.pairs) {
+    translation_sum += ground_truth[pair.gt_index].T_wc.translation() -
+                       alignment.rotation * estimate[pair.est_index].T_wc.translation();
+  }
+  alignment.translation = translation_sum / static_cast<double>(ate.pairs.size());
+  return alignment;
+}
+
 double share(std::size_t part, std::size_t whole) {
   return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
 }
@@ -216,7 +243,8 @@ MapEvaluation evaluateMap(const io::TumDataset& dataset, const std::filesystem::
   const auto ate = eval::evaluateAte(*dataset.groundTruth(), estimate);
   evaluation.trajectory_ate_rmse = ate.statistics.rmse;
   std::vector<Eigen::Vector3f> map_points = dense::readPly(evaluation.map_file).points;
-  for (auto& p : map_points) p = ate.alignment.apply(p.cast<double>()).cast<float>();
+  const eval::Alignment alignment = poseAlignment(*dataset.groundTruth(), estimate, ate);
+  for (auto& p : map_points) p = alignment.apply(p.cast<double>()).cast<float>();
   evaluation.static_points = map_points.size();
 
   if (dataset.hasMasks()) {

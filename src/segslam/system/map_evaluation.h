@@ -30,7 +30,7 @@ struct MapEvaluationOptions {
 struct MapEvaluation {
   std::filesystem::path map_file;
   std::size_t static_points = 0;
-  double trajectory_ate_rmse = 0.0;  // of the SE(3) alignment that maps the run onto ground truth
+  double trajectory_ate_rmse = 0.0;  // the run's ATE (SE(3) position alignment)
   // With mask.txt and ground truth:
   std::optional<std::size_t> on_dynamic_points;
   std::optional<double> on_dynamic_share;
@@ -43,7 +43,8 @@ struct MapEvaluation {
 };
 
 // Scores <run>/map/static.ply against the dataset's ground truth, in the ground-truth frame (the
-// run's CameraTrajectory.txt aligned onto groundtruth.txt, SE(3) as the ATE). Throws util::Error
+// rigid motion that best maps the poses of the run's CameraTrajectory.txt onto those of
+// groundtruth.txt, rotations included, so that short runs are aligned too). Throws util::Error
 // when files are missing or malformed or the dataset lacks ground truth.
 MapEvaluation evaluateMap(const io::TumDataset& dataset, const std::filesystem::path& run_dir,
                           const MapEvaluationOptions& options);
