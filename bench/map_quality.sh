@@ -91,7 +91,7 @@ lines = [
     "# Dense map quality and cost",
     "",
     f"`bench/map_quality.sh --runs {runs}`: `segslam run` in threaded mode (voxel 1 cm), then "
-    "`segslam eval map` in the ground-truth frame (the run's trajectory aligned by SE(3)).",
+    "`segslam eval map` in the ground-truth frame (the run's camera poses aligned onto the ground truth's).",
     f"Machine: {cpu}, {os.cpu_count()} cores (shared with other work while measured).",
     "",
     "| configuration | static points | dynamic points | on moving people (3 cm) | near person path "
