@@ -13,6 +13,9 @@ void registerEvalCommand(CLI::App& app);
 void registerEvalMasksCommand(CLI::App& eval);
 // `eval loops`, a sub-command of `eval`.
 void registerEvalLoopsCommand(CLI::App& eval);
+// `eval map`, a sub-command of `eval`.
+void registerEvalMapCommand(CLI::App& eval);
+void registerMapCommand(CLI::App& app);
 void registerSynthCommand(CLI::App& app);
 void registerViewCommand(CLI::App& app);
 // `vocab train` and `vocab info`: the bag-of-words vocabulary.

@@ -28,6 +28,34 @@ io::TumDataset openDataset(const DatasetArguments& arguments) {
   return io::TumDataset::open(arguments.dataset, options);
 }
 
+void addRunFolderOptions(CLI::App& command, DatasetArguments& arguments,
+                         std::filesystem::path& run_dir) {
+  command.add_option("--run", run_dir, "Run folder written by `segslam run`")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  command.add_option("-d,--dataset", arguments.dataset, "The run's dataset folder")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  command.add_option("--camera", arguments.camera_file,
+                     "Camera settings YAML (default: the run's camera.yaml)");
+  command.add_option("--camera-preset", arguments.camera_preset, "Camera preset")
+      ->check(CLI::IsMember(io::cameraPresetNames()));
+  command
+      .add_option("--max-time-diff", arguments.max_time_difference,
+                  "Max colour/depth timestamp difference for association (s)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+}
+
+io::TumDataset openRunDataset(DatasetArguments arguments, const std::filesystem::path& run_dir) {
+  const auto run_camera = run_dir / "camera.yaml";
+  if (arguments.camera_file.empty() && arguments.camera_preset.empty() &&
+      std::filesystem::exists(run_camera)) {
+    arguments.camera_file = run_camera.string();
+  }
+  return openDataset(arguments);
+}
+
 std::filesystem::path defaultOutDir(const std::filesystem::path& dataset,
                                     const std::string& prefix) {
   const auto name = std::filesystem::weakly_canonical(dataset).filename().string();

@@ -22,6 +22,13 @@ void addDatasetOptions(CLI::App& command, DatasetArguments& arguments);
 
 io::TumDataset openDataset(const DatasetArguments& arguments);
 
+// For commands that work on a finished run folder with its dataset: --run (required), --dataset,
+// --camera, --camera-preset and --max-time-diff. Without --camera or --camera-preset, the camera
+// is the run's camera.yaml, so that it is the one the run used.
+void addRunFolderOptions(CLI::App& command, DatasetArguments& arguments,
+                         std::filesystem::path& run_dir);
+io::TumDataset openRunDataset(DatasetArguments arguments, const std::filesystem::path& run_dir);
+
 // out/<prefix>_<dataset folder name>, used when --out is not given.
 std::filesystem::path defaultOutDir(const std::filesystem::path& dataset,
                                     const std::string& prefix);

@@ -133,6 +133,7 @@ void registerEvalCommand(CLI::App& app) {
   command->require_subcommand(0, 1);
   registerEvalMasksCommand(*command);
   registerEvalLoopsCommand(*command);
+  registerEvalMapCommand(*command);
   auto settings = std::make_shared<TrajectoryEvalSettings>();
   addTrajectoryOptions(*command, *settings);
   command->callback([command, settings] {

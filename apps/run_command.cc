@@ -47,6 +47,13 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
   } else {
     fmt::print("  ATE        not computed: the dataset has no groundtruth.txt\n");
   }
+  if (s.map) {
+    fmt::print(
+        "  map        {} static and {} dynamic points, {} objects from {} keyframes "
+        "({:.1f} s on the map thread, {:.1f} s to build)\n",
+        s.map->static_points, s.map->dynamic_points, s.map->objects, s.map->keyframes,
+        s.map->keyframe_seconds, s.map->build_seconds);
+  }
   fmt::print("  outputs    {}\n", std::filesystem::absolute(options.out_dir).string());
 }
 
@@ -87,6 +94,12 @@ void registerRunCommand(CLI::App& app) {
       ->capture_default_str();
   run->add_option("--max-frames", options->run.max_frames, "Process at most this many frames")
       ->check(CLI::PositiveNumber);
+  run->add_flag("--map,!--no-map", options->run.build_map,
+                "Build the dense map of the keyframes into map/ (default on)");
+  run->add_option("--map-voxel", options->run.map.keyframe.voxel_size,
+                  "Voxel size of the dense map (metres)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 1.0));
   run->callback([options] {
     if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset, "run");
     runCommand(*options);

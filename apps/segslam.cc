@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   segslam::apps::registerSynthCommand(app);
   segslam::apps::registerViewCommand(app);
   segslam::apps::registerVocabCommand(app);
+  segslam::apps::registerMapCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -8,6 +8,7 @@ packages=(
   libopencv-dev libeigen3-dev libceres-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev libyaml-cpp-dev libtbb-dev
+  libopen3d-dev
   clang libclang-rt-14-dev clang-format
   libcpp-httplib-dev chromium
 )

@@ -113,6 +113,12 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   {
     FrameMaskSource masks(dataset, options.masks, options.slam.deterministic);
     SlamSystem slam(dataset.camera(), options.slam);
+    std::optional<dense::MapBuilder> map_builder;
+    if (options.build_map) {
+      auto map_options = options.map;
+      map_options.keyframe.mask_dilation_px = options.slam.mask_dilation_px;
+      map_builder.emplace(dataset.camera(), map_options);
+    }
     for (std::size_t i = 0; i < summary.frames; ++i) {
       const io::RgbdFrame frame = dataset.loadFrame(i);
       const auto mask_start = std::chrono::steady_clock::now();
@@ -121,6 +127,10 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       stats.push_back(slam.processFrame(frame.timestamp, frame.rgb, frame.depth, mask));
       stats.back().mask_ms = mask_ms;
       stats.back().tracking_ms += mask_ms;
+      if (map_builder && stats.back().keyframe) {
+        map_builder->addKeyFrame(stats.back().frame_id, frame.timestamp,
+                                 {frame.rgb, frame.depth, mask, frame.labels, frame.instances});
+      }
       if (on_frame) on_frame(stats.back());
     }
     summary.network_runs = masks.networkRuns();
@@ -134,6 +144,10 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     io::writeTumTrajectory(out_dir / "KeyFrameTrajectory.txt", slam.keyFrameTrajectory(),
                            "segslam keyframe trajectory");
     summary.outputs = {out_dir / "CameraTrajectory.txt", out_dir / "KeyFrameTrajectory.txt"};
+    if (map_builder) {
+      summary.map = buildAndWriteMap(*map_builder, slam.keyFrameTrajectory(), out_dir / "map");
+      summary.outputs.push_back(out_dir / "map");
+    }
     summary.tracked_frames = trajectory.size();
     summary.keyframes = slam.numKeyFrames();
     summary.map_points = slam.numMapPoints();
@@ -174,6 +188,7 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
     json["network_runs"] = summary.network_runs;
     json["network_mean_ms"] = summary.network_mean_ms;
   }
+  if (summary.map) json["map"] = toJson(*summary.map);
   if (summary.evaluation) {
     json["ate_rmse_m"] = summary.evaluation->ate.statistics.rmse;
     json["rpe_translational_rmse_m"] = summary.evaluation->rpe.translational.rmse;

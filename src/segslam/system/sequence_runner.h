@@ -8,8 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "segslam/dense/map_builder.h"
 #include "segslam/eval/trajectory_evaluation.h"
 #include "segslam/io/tum_dataset.h"
+#include "segslam/system/map_output.h"
 #include "segslam/system/mask_source.h"
 #include "segslam/system/slam_system.h"
 
@@ -21,6 +23,9 @@ struct SequenceRunOptions {
   std::size_t max_frames = std::numeric_limits<std::size_t>::max();
   eval::TrajectoryEvaluationOptions evaluation;
   std::uint64_t seed = 0;
+  // Dense map of the keyframes (map/ in the run folder); its mask dilation is the SLAM one.
+  bool build_map = true;
+  dense::MapBuilderOptions map;
 };
 
 struct TimingSummary {
@@ -45,12 +50,15 @@ struct SequenceRunSummary {
   int network_runs = 0;  // semantic masks: frames the network actually ran on
   double network_mean_ms = 0.0;
   std::optional<eval::TrajectoryEvaluation> evaluation;
+  std::optional<MapSummary> map;
   std::vector<std::filesystem::path> outputs;
 };
 
 // Runs SLAM over a dataset and writes the run folder: CameraTrajectory.txt and
 // KeyFrameTrajectory.txt (TUM format), frame_log.csv (per-frame timings and state),
-// summary.json, and, with ground truth, evaluation.json and the evaluation plots.
+// summary.json, with ground truth evaluation.json and the evaluation plots, and with build_map the
+// dense map (map/static.ply, map/dynamic.ply, map/objects.json, map/objects/*.ply) built from the
+// keyframes' images and final poses, with the dataset's labels and instances when it has them.
 // Throws util::Error when the dataset lacks what the options need (e.g. oracle masks).
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
                                const std::filesystem::path& out_dir,

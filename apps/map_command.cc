@@ -1,0 +1,57 @@
+#include <fmt/format.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "dataset_arguments.h"
+#include "segslam/system/map_rebuild.h"
+
+namespace segslam::apps {
+
+namespace {
+
+struct MapOptions : DatasetArguments {
+  std::filesystem::path run_dir;
+  std::string masks = "oracle";
+  system::MapRebuildOptions rebuild;
+};
+
+void mapCommand(MapOptions& options) {
+  const auto dataset = openRunDataset(options, options.run_dir);
+  options.rebuild.oracle_masks = options.masks == "oracle";
+  const auto s = system::rebuildMap(dataset, options.run_dir, options.rebuild);
+  fmt::print(
+      "segslam map: {} static and {} dynamic points, {} objects from {} keyframes in "
+      "{:.1f} s\n  outputs    {}\n",
+      s.static_points, s.dynamic_points, s.objects, s.keyframes, s.build_seconds,
+      std::filesystem::absolute(options.run_dir / "map").string());
+}
+
+}  // namespace
+
+void registerMapCommand(CLI::App& app) {
+  auto options = std::make_shared<MapOptions>();
+  auto* command = app.add_subcommand(
+      "map",
+      "Rebuild a run's dense map (map/ in the run folder) from its KeyFrameTrajectory.txt and "
+      "the dataset's images");
+  addRunFolderOptions(*command, *options, options->run_dir);
+  command->add_option("--seg", options->masks, "Dynamic masks of the keyframes")
+      ->check(CLI::IsMember(std::vector<std::string>{"oracle", "none"}))
+      ->capture_default_str();
+  command
+      ->add_option("--mask-dilation", options->rebuild.map.keyframe.mask_dilation_px,
+                   "Dilation of the dynamic mask before the static map is taken (pixels)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--map-voxel", options->rebuild.map.keyframe.voxel_size,
+                   "Voxel size of the dense map (metres)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 1.0));
+  command->callback([options] { mapCommand(*options); });
+}
+
+}  // namespace segslam::apps

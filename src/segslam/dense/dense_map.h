@@ -1,0 +1,37 @@
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "segslam/dense/labelled_cloud.h"
+#include "segslam/dense/object_map.h"
+
+namespace segslam::dense {
+
+// The map of a run, in the world frame of its trajectory.
+struct DenseMap {
+  double voxel_size = 0.01;
+  LabelledCloud static_points;
+  LabelledCloud dynamic_points;    // where dynamic objects were seen, for checking the masks
+  std::vector<MapObject> objects;  // static objects, then dynamic ones
+};
+
+struct CloudCleaningOptions {
+  // Open3D's statistical outlier removal: a point goes when its mean distance to its
+  // `outlier_neighbours` nearest neighbours exceeds the cloud's mean by `outlier_std_ratio`
+  // standard deviations. 0 neighbours: no removal.
+  int outlier_neighbours = 16;
+  double outlier_std_ratio = 2.0;
+};
+
+// Statistical outlier removal (see CloudCleaningOptions), keeping the order of the points.
+LabelledCloud removeOutliers(const LabelledCloud& cloud, const CloudCleaningOptions& options);
+
+// Writes the map folder: static.ply, dynamic.ply (present even without points), objects.json
+// ({"voxel_size", "objects": [{"id", "label", "instance", "dynamic", "points", "centroid",
+// "bbox_min", "bbox_max", "file"}]}) and objects/<id>.ply. Earlier object files are removed
+// first so that the folder holds exactly this map. Throws util::Error naming a file that cannot
+// be written.
+void writeDenseMap(const DenseMap& map, const std::filesystem::path& folder);
+
+}  // namespace segslam::dense

@@ -1,0 +1,81 @@
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "segslam/core/camera.h"
+#include "segslam/core/trajectory.h"
+#include "segslam/dense/dense_map.h"
+#include "segslam/dense/keyframe_cloud.h"
+#include "segslam/dense/object_map.h"
+
+namespace segslam::dense {
+
+struct MapBuilderOptions {
+  KeyFrameCloudOptions keyframe;  // its voxel_size is the map's
+  CloudCleaningOptions cleaning;
+  ObjectMapOptions objects;  // the clustering distance is at least 3 voxels
+};
+
+// Builds the dense map of a run off the tracking thread. Keyframes are handed over as they are
+// made; a worker thread turns each into a voxelised cloud in its own camera frame. The world
+// map is assembled only in build(), from whatever keyframe poses are final then, so a loop
+// correction needs nothing but another build() with the corrected poses.
+class MapBuilder {
+ public:
+  MapBuilder(const core::Camera& camera, MapBuilderOptions options);
+  ~MapBuilder();
+  MapBuilder(const MapBuilder&) = delete;
+  MapBuilder& operator=(const MapBuilder&) = delete;
+
+  // Queues a keyframe and returns at once. The images are shared, not copied: the caller must
+  // not write into them afterwards. Timestamps must be unique.
+  void addKeyFrame(std::uint64_t id, double timestamp, KeyFrameImages images);
+  // Waits until every queued keyframe has its cloud; rethrows the first error a keyframe gave
+  // (images of the wrong type or size).
+  void finish();
+
+  // The world map: every keyframe cloud whose timestamp has a pose in `keyframe_poses`
+  // (camera-to-world, matched within 1e-4 s) transformed into the world, merged, voxelised once
+  // more and cleaned of outliers; keyframes without a pose (culled ones) are left out. Objects
+  // come from the labels. Waits for the queue first.
+  [[nodiscard]] DenseMap build(const core::Trajectory& keyframe_poses);
+
+  [[nodiscard]] std::size_t numKeyFrames();
+  // Time the worker spent on keyframe clouds, seconds.
+  [[nodiscard]] double keyFrameSeconds();
+
+ private:
+  struct QueuedKeyFrame {
+    std::uint64_t id = 0;
+    double timestamp = 0.0;
+    KeyFrameImages images;
+  };
+  struct StoredCloud {
+    std::uint64_t id = 0;
+    KeyFrameCloud cloud;
+  };
+
+  void work();
+  [[nodiscard]] LabelledCloud worldCloud(const core::Trajectory& keyframe_poses,
+                                         bool dynamic) const;
+
+  KeyFrameCloudMaker maker_;
+  MapBuilderOptions options_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<QueuedKeyFrame> queue_;
+  bool busy_ = false;
+  bool stopping_ = false;
+  std::map<double, StoredCloud> clouds_;  // by timestamp
+  double keyframe_seconds_ = 0.0;
+  std::exception_ptr error_;
+  std::thread worker_;
+};
+
+}  // namespace segslam::dense

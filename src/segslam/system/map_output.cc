@@ -1,0 +1,33 @@
+#include "segslam/system/map_output.h"
+
+namespace segslam::system {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+MapSummary buildAndWriteMap(dense::MapBuilder& builder, const core::Trajectory& keyframe_poses,
+                            const std::filesystem::path& folder) {
+  const auto start = std::chrono::steady_clock::now();
+  const dense::DenseMap map = builder.build(keyframe_poses);
+  dense::writeDenseMap(map, folder);
+  MapSummary summary;
+  summary.keyframes = builder.numKeyFrames();
+  summary.static_points = map.static_points.size();
+  summary.dynamic_points = map.dynamic_points.size();
+  summary.objects = map.objects.size();
+  summary.keyframe_seconds = builder.keyFrameSeconds();
+  summary.build_seconds = secondsSince(start);
+  return summary;
+}
+
+nlohmann::json toJson(const MapSummary& summary) {
+  return {{"keyframes", summary.keyframes},
+          {"static_points", summary.static_points},
+          {"dynamic_points", summary.dynamic_points},
+          {"objects", summary.objects},
+          {"keyframe_seconds", summary.keyframe_seconds},
+          {"build_seconds", summary.build_seconds}};
+}
+
+}  // namespace segslam::system

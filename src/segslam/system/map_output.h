@@ -1,0 +1,30 @@
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "segslam/core/trajectory.h"
+#include "segslam/dense/map_builder.h"
+
+namespace segslam::system {
+
+struct MapSummary {
+  std::size_t keyframes = 0;
+  std::size_t static_points = 0;
+  std::size_t dynamic_points = 0;
+  std::size_t objects = 0;
+  double keyframe_seconds = 0.0;  // keyframe clouds, on the map thread
+  double build_seconds = 0.0;     // waiting for that thread, assembling, cleaning, writing
+};
+
+// Builds the map from the keyframe poses and writes it into `folder` (see dense::writeDenseMap).
+MapSummary buildAndWriteMap(dense::MapBuilder& builder, const core::Trajectory& keyframe_poses,
+                            const std::filesystem::path& folder);
+
+nlohmann::json toJson(const MapSummary& summary);
+
+double secondsSince(std::chrono::steady_clock::time_point start);
+
+}  // namespace segslam::system
