@@ -45,6 +45,15 @@ struct SequenceRunSummary {
   int network_runs = 0;  // semantic masks: frames the network actually ran on
   double network_mean_ms = 0.0;
   std::optional<eval::TrajectoryEvaluation> evaluation;
+  bool loop_closing = false;
+  loop::LoopClosingStats loops;
+  // Per accepted loop with ground truth: how far its verified relative pose is from the true one
+  // (a false loop shows as an error of decimetres or more).
+  struct LoopCheck {
+    double translation_error_m = 0.0;
+    double rotation_error_deg = 0.0;
+  };
+  std::vector<std::optional<LoopCheck>> loop_checks;
   std::vector<std::filesystem::path> outputs;
 };
 
