@@ -18,6 +18,7 @@ namespace {
 
 // A verified loop whose relative pose is farther than this from the ground truth's is false.
 constexpr double kFalseLoopTranslationM = 0.1;
+constexpr double kFalseLoopRotationDeg = 5.0;
 
 struct RunOptions : DatasetArguments {
   MaskArguments masks;
@@ -44,13 +45,15 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
     int false_loops = 0;
     for (const auto& check : s.loop_checks) {
       if (!check) continue;
-      ++(check->translation_error_m < kFalseLoopTranslationM ? true_loops : false_loops);
+      const bool agrees = check->translation_error_m < kFalseLoopTranslationM &&
+                          check->rotation_error_deg < kFalseLoopRotationDeg;
+      ++(agrees ? true_loops : false_loops);
     }
     fmt::print("  loops      {} accepted of {} verified candidates", s.loops.loops_accepted,
                s.loops.consistent_candidates);
     if (true_loops + false_loops > 0) {
-      fmt::print(" ({} within {:.2f} m of ground truth, {} not)", true_loops,
-                 kFalseLoopTranslationM, false_loops);
+      fmt::print(" ({} within {:.2f} m and {:.0f} deg of ground truth, {} not)", true_loops,
+                 kFalseLoopTranslationM, kFalseLoopRotationDeg, false_loops);
     }
     fmt::print(", {} global BA\n", s.loops.global_bas_completed);
   }
@@ -101,6 +104,11 @@ void registerRunCommand(CLI::App& app) {
       ->check(CLI::Range(100, 10000));
   run->add_flag("--no-loop-closing{false}", options->run.slam.loop_closing,
                 "Do not detect and close loops (loop closing is on by default)");
+  run->add_option(
+         "--loop-consistency", options->run.slam.loop.consecutive_queries,
+         "Consecutive keyframes that must propose the same place before a loop is verified")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10));
   run->add_flag("--deterministic", options->run.slam.deterministic,
                 "Run local mapping inline after each keyframe: reproducible results, slower");
   run->add_option("--seed", options->run.seed, "Seed of the random number generators")

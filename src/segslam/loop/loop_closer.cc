@@ -18,15 +18,18 @@ geometry::Pose worldCorrection(const geometry::Pose& T_old, const geometry::Pose
   return geometry::orthonormalised(T_new.inverse() * T_old);
 }
 
-std::vector<LoopMapPoint> snapshotPoints(
-    const std::vector<std::shared_ptr<map::MapPoint>>& points) {
-  std::vector<LoopMapPoint> snapshot;
-  snapshot.reserve(points.size());
-  for (const auto& point : points) {
-    if (point->descriptor.empty()) continue;
-    snapshot.push_back({point, point->position, point->descriptor.clone()});
+// Every keypoint of the keyframe with a trusted depth, placed in the world by the keyframe's pose:
+// RGB-D sees the place even where the map kept no point (points seen by fewer than three
+// keyframes are culled, and a fast turn leaves few). The keypoint's map point comes along when
+// there is one, for fusion.
+void appendKeyPoints(const map::KeyFrame& keyframe, std::vector<LoopMapPoint>& points) {
+  for (std::size_t i = 0; i < keyframe.size(); ++i) {
+    const float depth = keyframe.depth[i];
+    if (depth <= 0.0f || depth > keyframe.camera->close_depth_m) continue;
+    const auto& point = keyframe.mapPoints()[i];
+    points.push_back({point && !point->bad ? point : nullptr, keyframe.unproject(i),
+                      keyframe.descriptors.row(static_cast<int>(i)).clone()});
   }
-  return snapshot;
 }
 
 // The keyframe whose correction a map point follows: its reference, or its first live observer.
@@ -158,8 +161,9 @@ void LoopCloser::processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe)
 }
 
 std::vector<std::uint64_t> LoopCloser::confirmedCandidates(map::KeyFrame& keyframe) {
+  // Keyframe ids count every keyframe made, culled ones included: how far the camera has come.
   const bool too_early =
-      map_.numKeyFrames() < options_.min_keyframes ||
+      keyframe.id < options_.min_keyframes ||
       (any_loop_ && keyframe.id < last_loop_keyframe_ + options_.keyframes_after_loop);
   if (too_early) {
     consistency_.reset();
@@ -174,6 +178,7 @@ std::vector<std::uint64_t> LoopCloser::confirmedCandidates(map::KeyFrame& keyfra
     CandidateGroup group{id, {id}};
     for (const map::KeyFrame* k : it->second->covisiblesWithWeight(0))
       group.keyframes.insert(k->id);
+    spdlog::debug("loop candidate for keyframe {}: keyframe {}", keyframe.id, id);
     groups.push_back(std::move(group));
   }
   return consistency_.update(groups);
@@ -190,22 +195,24 @@ bool LoopCloser::tryLoop(const std::shared_ptr<map::KeyFrame>& query, std::uint6
     candidate = keyframes_by_id_.at(candidate_id);
     if (query->bad || candidate->bad) return false;
     loop_query = LoopQuery::of(*query);
-    std::vector<std::shared_ptr<map::MapPoint>> own;
-    for (const auto& [index, point] : candidate->validMapPoints()) own.push_back(point);
-    candidate_points = snapshotPoints(own);
+    appendKeyPoints(*candidate, candidate_points);
     std::set<std::uint64_t> seen;
+    // The query's own neighbourhood would only confirm the drifted pose.
+    const auto query_covisibles = query->covisiblesWithWeight(0);
+    const std::set<const map::KeyFrame*> query_side(query_covisibles.begin(),
+                                                    query_covisibles.end());
     std::vector<map::KeyFrame*> neighbourhood = {candidate};
     for (map::KeyFrame* k : candidate->bestCovisibles(options_.loop_local_keyframes)) {
-      neighbourhood.push_back(k);
+      if (!k->bad && k != query.get() && !query_side.contains(k)) neighbourhood.push_back(k);
     }
     for (map::KeyFrame* k : neighbourhood) {
+      appendKeyPoints(*k, local_map);
       for (const auto& [index, point] : k->validMapPoints()) {
         if (!point->isObservedBy(query.get()) && seen.insert(point->id).second) {
           local_points.push_back(point);
         }
       }
     }
-    local_map = snapshotPoints(local_points);
   }
   const LoopVerification verification =
       verifyLoop(loop_query, candidate_points, local_map, options_.verifier);
@@ -213,9 +220,11 @@ bool LoopCloser::tryLoop(const std::shared_ptr<map::KeyFrame>& query, std::uint6
     std::lock_guard lock(stats_mutex_);
     ++stats_.consistent_candidates;
   }
-  spdlog::debug("loop candidate {} for keyframe {}: {} matches, {} RANSAC inliers, {} inliers",
-                candidate_id, query->id, verification.matches, verification.ransac_inliers,
-                verification.inliers);
+  spdlog::debug(
+      "loop candidate {} for keyframe {}: {} candidate points, {} local points, {} matches, "
+      "{} RANSAC inliers, {} inliers",
+      candidate_id, query->id, candidate_points.size(), local_map.size(), verification.matches,
+      verification.ransac_inliers, verification.inliers);
   if (!verification.accepted) return false;
   correctLoop(*query, *candidate, verification, local_points);
   return true;
@@ -269,7 +278,7 @@ void LoopCloser::correctLoop(map::KeyFrame& query, map::KeyFrame& loop_keyframe,
       old_connections[k] = {covisibles.begin(), covisibles.end()};
     }
     for (const auto& [index, loop_point] : verification.matched_points) {
-      if (loop_point->bad || loop_point->isObservedBy(&query)) continue;
+      if (!loop_point || loop_point->bad || loop_point->isObservedBy(&query)) continue;
       const auto existing = query.mapPoints()[index];
       if (existing && !existing->bad) {
         existing->replaceWith(loop_point);

@@ -22,11 +22,14 @@
 namespace segslam::loop {
 
 struct LoopClosingOptions {
-  std::size_t min_keyframes = 12;           // map size before loops are looked for
+  std::uint64_t min_keyframes = 5;  // keyframes made (culled ones too) before loops are sought
   std::uint64_t keyframes_after_loop = 10;  // keyframes skipped after a correction
   std::size_t max_candidates = 3;           // per query keyframe, from the detector
-  int consecutive_queries = 3;              // see ConsistencyCheck
-  std::size_t loop_local_keyframes = 10;    // the candidate's covisibles whose points verify it
+  // Consecutive query keyframes that must propose the same place (see ConsistencyCheck). 1: our
+  // tracker makes about 8 keyframes per full turn, so a revisited place is often seen by a single
+  // keyframe; the strict geometric verification is what keeps false loops out.
+  int consecutive_queries = 1;
+  std::size_t loop_local_keyframes = 10;  // the candidate's covisibles whose points verify it
   LoopVerifierOptions verifier;
   int essential_covisibility_weight = 100;  // covisibility edges kept in the pose graph
   PoseGraphOptions pose_graph;

@@ -143,8 +143,7 @@ void LocalMapper::run() {
     std::shared_ptr<map::KeyFrame> keyframe;
     {
       std::unique_lock lock(queue_mutex_);
-      queue_changed_.wait(lock,
-                          [this] { return !paused_ && (stopping_ || !queue_.empty()); });
+      queue_changed_.wait(lock, [this] { return !paused_ && (stopping_ || !queue_.empty()); });
       if (queue_.empty()) return;
       keyframe = queue_.front();
       queue_.pop_front();

@@ -96,8 +96,7 @@ class Stage {
     }
   }
 
-  ceres::Solver::Summary solve(int iterations, int num_threads,
-                               const std::atomic<bool>* cancel) {
+  ceres::Solver::Summary solve(int iterations, int num_threads, const std::atomic<bool>* cancel) {
     ceres::Solver::Options options;
     CancelCallback cancel_callback(cancel);
     if (cancel != nullptr) options.callbacks.push_back(&cancel_callback);

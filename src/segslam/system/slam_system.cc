@@ -48,8 +48,9 @@ SlamSystem::SlamSystem(const core::Camera& camera, SlamOptions options)
     loop_closer_ = std::make_unique<loop::LoopCloser>(
         map_, mapper_, std::make_unique<loop::DescriptorVoteDetector>(options_.loop_detector),
         options_.loop);
-    mapper_.setProcessedKeyFrameObserver(
-        [this](std::shared_ptr<map::KeyFrame> keyframe) { loop_closer_->insertKeyFrame(keyframe); });
+    mapper_.setProcessedKeyFrameObserver([this](std::shared_ptr<map::KeyFrame> keyframe) {
+      loop_closer_->insertKeyFrame(keyframe);
+    });
   }
   if (!options_.deterministic) {
     mapper_.start();
