@@ -28,16 +28,16 @@ render() {  # name, synth options...
   local name="$1"; shift
   [[ -f "$out/$name/groundtruth.txt" ]] || "$segslam" synth --out "$out/$name" --seed 1 "$@" >/dev/null
 }
-render lap_drift --path loop --people 0 --frames 300 --width 320 --height 240 --depth-noise kinect
-render lap_600 --path loop --people 0 --frames 600 --depth-noise kinect
-render lap_people --path loop --people 2 --frames 600 --depth-noise kinect
+render room_320 --path room --people 0 --frames 450 --width 320 --height 240 --depth-noise kinect
+render room_600 --path room --people 0 --frames 600 --depth-noise kinect
+render room_people --path room --people 2 --frames 600 --depth-noise kinect
 render xyz_people --path xyz --people 2
 
 # name | dataset | extra run options
 configurations=(
-  "synthetic lap 320x240, 400 features|$out/lap_drift|--features 400"
-  "synthetic lap 600 frames, 400 features|$out/lap_600|--features 400"
-  "synthetic lap 600 frames, 2 people, oracle|$out/lap_people|--seg oracle --features 400"
+  "synthetic room lap 320x240|$out/room_320|--seg none"
+  "synthetic room lap 640x480|$out/room_600|--seg none"
+  "synthetic room lap, 2 people, oracle|$out/room_people|--seg oracle"
   "synthetic xyz, 2 people, oracle|$out/xyz_people|--seg oracle"
   "synthetic xyz, 2 people, masks off|$out/xyz_people|--seg none"
 )
