@@ -16,6 +16,10 @@ namespace segslam::apps {
 
 namespace {
 
+// A verified loop whose relative pose is farther than this from the ground truth's is false.
+constexpr double kFalseLoopTranslationM = 0.1;
+constexpr double kFalseLoopRotationDeg = 5.0;
+
 struct RunOptions : DatasetArguments {
   MaskArguments masks;
   system::SequenceRunOptions run;
@@ -35,6 +39,23 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
     fmt::print("  network    ran on {} of {} frames, {:.0f} ms each ({})\n", s.network_runs,
                s.frames, s.network_mean_ms,
                options.run.slam.deterministic ? "inline, every 5th frame" : "own thread");
+  }
+  if (s.loop_closing) {
+    int true_loops = 0;
+    int false_loops = 0;
+    for (const auto& check : s.loop_checks) {
+      if (!check) continue;
+      const bool agrees = check->translation_error_m < kFalseLoopTranslationM &&
+                          check->rotation_error_deg < kFalseLoopRotationDeg;
+      ++(agrees ? true_loops : false_loops);
+    }
+    fmt::print("  loops      {} accepted of {} verified candidates", s.loops.loops_accepted,
+               s.loops.consistent_candidates);
+    if (true_loops + false_loops > 0) {
+      fmt::print(" ({} within {:.2f} m and {:.0f} deg of ground truth, {} not)", true_loops,
+                 kFalseLoopTranslationM, kFalseLoopRotationDeg, false_loops);
+    }
+    fmt::print(", {} global BA\n", s.loops.global_bas_completed);
   }
   if (s.evaluation) {
     const auto& ate = s.evaluation->ate.statistics;
@@ -88,6 +109,13 @@ void registerRunCommand(CLI::App& app) {
   run->add_option("--features", options->run.slam.orb.num_features, "ORB features per frame")
       ->capture_default_str()
       ->check(CLI::Range(100, 10000));
+  run->add_flag("--no-loop-closing{false}", options->run.slam.loop_closing,
+                "Do not detect and close loops (loop closing is on by default)");
+  run->add_option(
+         "--loop-consistency", options->run.slam.loop.consecutive_queries,
+         "Consecutive keyframes that must propose the same place before a loop is verified")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10));
   run->add_flag("--deterministic", options->run.slam.deterministic,
                 "Run local mapping inline after each keyframe: reproducible results, slower");
   run->add_option("--seed", options->run.seed, "Seed of the random number generators")

@@ -28,7 +28,8 @@ void addOptions(CLI::App& command, SynthArguments& args) {
   command
       .add_option("--path", o.path,
                   "Camera path: xyz (back and forth along the camera axes), loop (one lap that "
-                  "ends at its start pose; needs >= 240 frames) or static")
+                  "ends at its start pose; needs >= 240 frames), room (a lap turning once all the "
+                  "way round, ends at its start pose; needs >= 240 frames) or static")
       ->check(CLI::IsMember(synth::cameraPathNames()))
       ->capture_default_str();
   command.add_option("--people", o.people, "Number of walking people (0 = static scene)")

@@ -33,6 +33,11 @@ class Map {
   void pruneBadMapPoints();
   void clear();
 
+  // Counts rewrites of the whole map (loop correction, global BA), so that tracking knows when
+  // to re-anchor its last frame on its reference keyframe.
+  void notifyCorrection() { ++corrections_; }
+  [[nodiscard]] std::uint64_t corrections() const { return corrections_; }
+
   mutable std::mutex mutex;
 
  private:
@@ -40,6 +45,7 @@ class Map {
   std::vector<std::shared_ptr<MapPoint>> map_points_;
   std::uint64_t next_keyframe_id_ = 0;
   std::uint64_t next_map_point_id_ = 0;
+  std::uint64_t corrections_ = 0;
 };
 
 }  // namespace segslam::map

@@ -120,6 +120,20 @@ void LocalMapper::finish() {
   thread_.join();
 }
 
+void LocalMapper::pause() {
+  std::unique_lock lock(queue_mutex_);
+  paused_ = true;
+  queue_changed_.wait(lock, [this] { return !busy_; });
+}
+
+void LocalMapper::resume() {
+  {
+    std::lock_guard lock(queue_mutex_);
+    paused_ = false;
+  }
+  queue_changed_.notify_all();
+}
+
 void LocalMapper::processQueued() {
   while (auto keyframe = popKeyFrame()) processKeyFrame(keyframe);
 }
@@ -129,15 +143,18 @@ void LocalMapper::run() {
     std::shared_ptr<map::KeyFrame> keyframe;
     {
       std::unique_lock lock(queue_mutex_);
-      queue_changed_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
+      queue_changed_.wait(lock, [this] { return !paused_ && (stopping_ || !queue_.empty()); });
       if (queue_.empty()) return;
       keyframe = queue_.front();
       queue_.pop_front();
       busy_ = true;
     }
     processKeyFrame(keyframe);
-    std::lock_guard lock(queue_mutex_);
-    busy_ = false;
+    {
+      std::lock_guard lock(queue_mutex_);
+      busy_ = false;
+    }
+    queue_changed_.notify_all();
   }
 }
 
@@ -157,9 +174,13 @@ void LocalMapper::processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe
     fuseWithNeighbours(*keyframe);
   }
   if (queuedKeyFrames() == 0 && map_.numKeyFrames() > 2) localBundleAdjustment(*keyframe);
-  std::lock_guard lock(map_.mutex);
-  if (options_.cull_keyframes) cullRedundantKeyFrames(*keyframe);
-  map_.pruneBadMapPoints();
+  {
+    std::lock_guard lock(map_.mutex);
+    if (options_.cull_keyframes) cullRedundantKeyFrames(*keyframe);
+    map_.pruneBadMapPoints();
+    if (keyframe->bad) return;
+  }
+  if (observer_) observer_(keyframe);
 }
 
 void LocalMapper::integrateKeyFrame(map::KeyFrame& keyframe) {

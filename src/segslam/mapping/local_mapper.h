@@ -3,6 +3,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -46,6 +47,16 @@ class LocalMapper : public tracking::KeyFrameSink {
   // Processes every queued keyframe on the calling thread.
   void processQueued();
 
+  // Called (without the map mutex) with each keyframe that survived its processing: the loop
+  // closer's queue. Set before start().
+  void setProcessedKeyFrameObserver(std::function<void(std::shared_ptr<map::KeyFrame>)> observer) {
+    observer_ = std::move(observer);
+  }
+  // Loop correction rewrites the map: pause() returns once the keyframe in progress is done and
+  // keeps the thread waiting (keyframes still queue up) until resume().
+  void pause();
+  void resume();
+
   [[nodiscard]] double totalBundleAdjustmentSeconds() const { return ba_seconds_; }
 
  private:
@@ -67,6 +78,8 @@ class LocalMapper : public tracking::KeyFrameSink {
   std::deque<std::shared_ptr<map::KeyFrame>> queue_;
   bool busy_ = false;
   bool stopping_ = false;
+  bool paused_ = false;
+  std::function<void(std::shared_ptr<map::KeyFrame>)> observer_;
   std::thread thread_;
   double ba_seconds_ = 0.0;
 };

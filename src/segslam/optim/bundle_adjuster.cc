@@ -24,6 +24,17 @@ constexpr int kMaxKeyFramesForDenseSchur = 50;
 constexpr int kPointGroup = 0;
 constexpr int kPoseGroup = 1;
 
+class CancelCallback final : public ceres::IterationCallback {
+ public:
+  explicit CancelCallback(const std::atomic<bool>* cancel) : cancel_(cancel) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return cancel_ != nullptr && cancel_->load() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const std::atomic<bool>* cancel_;
+};
+
 // A keyframe pose as the solver's parameter blocks: T_cw = [R(rotation) | translation].
 struct PoseParameters {
   Eigen::Quaterniond rotation;
@@ -85,8 +96,10 @@ class Stage {
     }
   }
 
-  ceres::Solver::Summary solve(int iterations, int num_threads) {
+  ceres::Solver::Summary solve(int iterations, int num_threads, const std::atomic<bool>* cancel) {
     ceres::Solver::Options options;
+    CancelCallback cancel_callback(cancel);
+    if (cancel != nullptr) options.callbacks.push_back(&cancel_callback);
     options.max_num_iterations = iterations;
     options.num_threads = num_threads;
     options.linear_solver_type = num_free_keyframes_ <= kMaxKeyFramesForDenseSchur
@@ -170,7 +183,7 @@ BundleAdjustmentResult bundleAdjust(BundleAdjustmentProblem& problem,
   Stage robust_stage(problem, poses);
   robust_stage.addObservations(in_front, /*robust=*/true);
   const ceres::Solver::Summary first =
-      robust_stage.solve(options.iterations_first, options.num_threads);
+      robust_stage.solve(options.iterations_first, options.num_threads, options.cancel);
   result.iterations = iterationsOf(first);
   result.initial_cost = first.initial_cost;
   result.final_cost = first.final_cost;
@@ -179,7 +192,7 @@ BundleAdjustmentResult bundleAdjust(BundleAdjustmentProblem& problem,
     Stage inlier_stage(problem, poses);
     inlier_stage.addObservations(classify(problem, poses), /*robust=*/false);
     const ceres::Solver::Summary second =
-        inlier_stage.solve(options.iterations_second, options.num_threads);
+        inlier_stage.solve(options.iterations_second, options.num_threads, options.cancel);
     result.iterations += iterationsOf(second);
     result.final_cost = second.final_cost;
   }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -40,6 +41,9 @@ struct BundleAdjustmentOptions {
   int iterations_second = 10;   // plain least squares on the first stage's inliers
   bool remove_outliers = true;  // false: skip the second stage
   int num_threads = 1;          // 1 keeps results bit-for-bit reproducible
+  // Set from another thread, it stops the solver after its current iteration (the result is then
+  // partial; the caller discards it).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct BundleAdjustmentResult {

@@ -70,6 +70,22 @@ geometry::Pose loopPose(double tau) {
   return makePose(position, cameraRotation(yaw, pitch, roll));
 }
 
+// tau in [0, 1): fraction of the lap. The camera walks a circle around the room's centre while
+// turning once all the way round, so the start's view comes back only at the end: a loop whose
+// two ends share no keyframes.
+geometry::Pose roomLoopPose(double tau) {
+  const Eigen::Vector3d centre(2.6, 2.5, 1.4);
+  constexpr double kRadius = 0.6;
+  const double angle = kPi + 2.0 * kPi * tau;
+  const Eigen::Vector3d position =
+      centre + Eigen::Vector3d(kRadius * std::cos(angle), kRadius * std::sin(angle),
+                               0.06 * std::sin(4.0 * kPi * tau));
+  const double yaw = angle + kPi;  // facing away from the centre, towards the walls
+  const double pitch = -10.0 * kDegree + 4.0 * kDegree * std::sin(2.0 * kPi * tau);
+  const double roll = 2.0 * kDegree * std::sin(4.0 * kPi * tau);
+  return makePose(position, cameraRotation(yaw, pitch, roll));
+}
+
 }  // namespace
 
 std::vector<geometry::Pose> cameraTrajectory(const SynthOptions& options) {
@@ -80,6 +96,8 @@ std::vector<geometry::Pose> cameraTrajectory(const SynthOptions& options) {
     if (options.path == "loop") {
       // The last frame is the first pose again, exactly.
       poses.push_back(loopPose(static_cast<double>(k % lap) / lap));
+    } else if (options.path == "room") {
+      poses.push_back(roomLoopPose(static_cast<double>(k % lap) / lap));
     } else if (options.path == "xyz") {
       poses.push_back(xyzPose(k / kSynthFps));
     } else {

@@ -72,6 +72,15 @@ TEST(SynthCameraPath, LoopEndsExactlyAtItsStartAndGoesSomewhereElse) {
   }
 }
 
+TEST(SynthCameraPath, RoomLoopTurnsOnceAndEndsAtItsStart) {
+  const int frames = 600;
+  const auto poses = cameraTrajectory(pathOptions("room", frames));
+  EXPECT_LT((poses.front().matrix() - poses.back().matrix()).cwiseAbs().maxCoeff(), 1e-9);
+  expectHandheldAndInside(poses);
+  const geometry::Pose half = poses.front().inverse() * poses[frames / 2];
+  EXPECT_GT(geometry::rotationAngle(half), 170.0 * std::numbers::pi / 180);
+}
+
 TEST(SynthCameraPath, StaticNeverMoves) {
   const auto poses = cameraTrajectory(pathOptions("static", 50));
   for (const auto& pose : poses) EXPECT_TRUE(pose.isApprox(poses.front(), 0.0));

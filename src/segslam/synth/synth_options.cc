@@ -34,7 +34,7 @@ void requireMember(const char* option, const std::string& value,
 
 }  // namespace
 
-std::vector<std::string> cameraPathNames() { return {"xyz", "loop", "static"}; }
+std::vector<std::string> cameraPathNames() { return {"xyz", "loop", "room", "static"}; }
 
 std::vector<std::string> depthNoiseNames() { return {"none", "kinect"}; }
 
@@ -47,9 +47,9 @@ void validateOptions(const SynthOptions& options) {
   requireInRange("--people", options.people, 0, kSynthMaxPeople);
   requireInRange("--person-speed", options.person_speed, 0.0, kSynthMaxPersonSpeed);
   requireInRange("--person-size", options.person_size, kSynthMinPersonSize, kSynthMaxPersonSize);
-  if (options.path == "loop" && options.frames < kSynthMinLoopFrames) {
-    fail(fmt::format("--path loop needs at least {} frames (one lap at handheld speed), got {}",
-                     kSynthMinLoopFrames, options.frames));
+  if ((options.path == "loop" || options.path == "room") && options.frames < kSynthMinLoopFrames) {
+    fail(fmt::format("--path {} needs at least {} frames (one lap at handheld speed), got {}",
+                     options.path, kSynthMinLoopFrames, options.frames));
   }
 }
 

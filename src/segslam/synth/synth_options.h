@@ -16,7 +16,8 @@ struct SynthOptions {
   int height = 480;
   // Camera path: "xyz" (back-and-forth along the camera axes with small rotations, like TUM
   // fr1/xyz), "loop" (a closed path through the room that ends exactly at its start pose) or
-  // "static" (the camera does not move).
+  // "room" (a lap around the room's centre turning once all the way round, ending at its start
+  // pose: the start's view comes back only at the end) or "static" (the camera does not move).
   std::string path = "xyz";
   int people = 2;                // 0 = no people
   double person_speed = 1.0;     // walking speed in m/s; 0 = people stand still

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <opencv2/core/utility.hpp>
 
+#include "segslam/eval/closest_index.h"
 #include "segslam/eval/evaluation_plots.h"
 #include "segslam/eval/evaluation_report.h"
 #include "segslam/io/trajectory_io.h"
@@ -94,6 +95,32 @@ void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
   summary.evaluation = std::move(evaluation);
 }
 
+std::optional<geometry::Pose> groundTruthNear(const core::Trajectory& ground_truth, double t) {
+  if (ground_truth.empty()) return std::nullopt;
+  const auto timestamps = ground_truth.timestamps();
+  const std::size_t i = eval::findClosestIndex(timestamps, t);
+  if (std::abs(timestamps[i] - t) > 0.02) return std::nullopt;
+  return ground_truth[i].T_wc;
+}
+
+void checkLoops(const io::TumDataset& dataset, SequenceRunSummary& summary) {
+  for (const loop::LoopRecord& record : summary.loops.loops) {
+    std::optional<SequenceRunSummary::LoopCheck> check;
+    if (dataset.groundTruth()) {
+      const auto query = groundTruthNear(*dataset.groundTruth(), record.query_timestamp);
+      const auto loop = groundTruthNear(*dataset.groundTruth(), record.loop_timestamp);
+      if (query && loop) {
+        // T_query_loop = T_query_w * T_w_loop from the ground truth's camera-to-world poses.
+        const geometry::Pose truth = query->inverse() * *loop;
+        const geometry::Pose error = record.T_query_loop.inverse() * truth;
+        check = SequenceRunSummary::LoopCheck{error.translation().norm(),
+                                              geometry::rotationAngle(error) * 180.0 / M_PI};
+      }
+    }
+    summary.loop_checks.push_back(check);
+  }
+}
+
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
@@ -152,6 +179,9 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     summary.keyframes = slam.numKeyFrames();
     summary.map_points = slam.numMapPoints();
     summary.bundle_adjustment_seconds = slam.bundleAdjustmentSeconds();
+    summary.loop_closing = options.slam.loop_closing;
+    summary.loops = slam.loopClosingStats();
+    checkLoops(dataset, summary);
     evaluate(dataset, options, out_dir, trajectory, summary);
   }
   std::vector<double> tracking_ms;
@@ -172,6 +202,34 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   return summary;
 }
 
+namespace {
+
+nlohmann::json loopClosingJson(const SequenceRunSummary& summary) {
+  const loop::LoopClosingStats& stats = summary.loops;
+  nlohmann::json loops = nlohmann::json::array();
+  for (std::size_t i = 0; i < stats.loops.size(); ++i) {
+    const loop::LoopRecord& record = stats.loops[i];
+    nlohmann::json entry = {{"query_keyframe", record.query_keyframe},
+                            {"loop_keyframe", record.loop_keyframe},
+                            {"query_timestamp", record.query_timestamp},
+                            {"loop_timestamp", record.loop_timestamp},
+                            {"inliers", record.inliers},
+                            {"correction_m", record.drift_m}};
+    if (i < summary.loop_checks.size() && summary.loop_checks[i]) {
+      entry["ground_truth_translation_error_m"] = summary.loop_checks[i]->translation_error_m;
+      entry["ground_truth_rotation_error_deg"] = summary.loop_checks[i]->rotation_error_deg;
+    }
+    loops.push_back(entry);
+  }
+  return {{"candidates_verified", stats.consistent_candidates},
+          {"loops_accepted", stats.loops_accepted},
+          {"global_bas_completed", stats.global_bas_completed},
+          {"global_bas_cancelled", stats.global_bas_cancelled},
+          {"loops", loops}};
+}
+
+}  // namespace
+
 nlohmann::json toJson(const SequenceRunSummary& summary) {
   nlohmann::json json = {{"frames", summary.frames},
                          {"tracked_frames", summary.tracked_frames},
@@ -184,6 +242,7 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
                          {"frames_per_second", summary.frames_per_second},
                          {"bundle_adjustment_seconds", summary.bundle_adjustment_seconds},
                          {"peak_rss_mb", summary.peak_rss_mb}};
+  if (summary.loop_closing) json["loop_closing"] = loopClosingJson(summary);
   if (summary.network_runs > 0) {
     json["network_runs"] = summary.network_runs;
     json["network_mean_ms"] = summary.network_mean_ms;

@@ -51,6 +51,15 @@ struct SequenceRunSummary {
   double network_mean_ms = 0.0;
   std::optional<eval::TrajectoryEvaluation> evaluation;
   std::optional<MapSummary> map;
+  bool loop_closing = false;
+  loop::LoopClosingStats loops;
+  // Per accepted loop with ground truth: how far its verified relative pose is from the true one
+  // (a false loop shows as an error of decimetres or more).
+  struct LoopCheck {
+    double translation_error_m = 0.0;
+    double rotation_error_deg = 0.0;
+  };
+  std::vector<std::optional<LoopCheck>> loop_checks;
   std::vector<std::filesystem::path> outputs;
 };
 

@@ -44,7 +44,18 @@ SlamSystem::SlamSystem(const core::Camera& camera, SlamOptions options)
       extractor_(extractorOptions(options.orb)),
       mapper_(map_, options.mapper),
       tracker_(map_, mapper_, options.tracker) {
-  if (!options_.deterministic) mapper_.start();
+  if (options_.loop_closing) {
+    loop_closer_ = std::make_unique<loop::LoopCloser>(
+        map_, mapper_, std::make_unique<loop::DescriptorVoteDetector>(options_.loop_detector),
+        options_.loop);
+    mapper_.setProcessedKeyFrameObserver([this](std::shared_ptr<map::KeyFrame> keyframe) {
+      loop_closer_->insertKeyFrame(keyframe);
+    });
+  }
+  if (!options_.deterministic) {
+    mapper_.start();
+    if (loop_closer_) loop_closer_->start();
+  }
 }
 
 SlamSystem::~SlamSystem() { finish(); }
@@ -72,7 +83,10 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
     stats.matches = result.matches;
     stats.keyframe = result.new_keyframe;
   }
-  if (options_.deterministic) mapper_.processQueued();
+  if (options_.deterministic) {
+    mapper_.processQueued();
+    if (loop_closer_) loop_closer_->processQueued();
+  }
   stats.tracking_ms = millisecondsSince(start);
   return stats;
 }
@@ -80,6 +94,11 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
 void SlamSystem::finish() {
   mapper_.finish();
   mapper_.processQueued();
+  if (loop_closer_) loop_closer_->finish();
+}
+
+loop::LoopClosingStats SlamSystem::loopClosingStats() const {
+  return loop_closer_ ? loop_closer_->stats() : loop::LoopClosingStats{};
 }
 
 core::Trajectory SlamSystem::cameraTrajectory() const {

@@ -8,6 +8,8 @@
 #include "segslam/core/camera.h"
 #include "segslam/core/trajectory.h"
 #include "segslam/feature/orb_extractor.h"
+#include "segslam/loop/descriptor_vote_detector.h"
+#include "segslam/loop/loop_closer.h"
 #include "segslam/map/map.h"
 #include "segslam/mapping/local_mapper.h"
 #include "segslam/tracking/tracker.h"
@@ -18,6 +20,11 @@ struct SlamOptions {
   feature::OrbExtractorOptions orb;
   tracking::TrackerOptions tracker;
   mapping::LocalMapperOptions mapper;
+  // Loop closing on its own thread (inline in deterministic mode); candidates from
+  // loop::DescriptorVoteDetector.
+  bool loop_closing = true;
+  loop::LoopClosingOptions loop;
+  loop::DescriptorVoteOptions loop_detector;
   // Virtual stereo baseline times fx (ORB-SLAM2's TUM setting) and the depth, in baselines,
   // below which a keypoint's depth is trusted to create points (40 baselines ~ 3 m).
   double bf = 40.0;
@@ -65,6 +72,8 @@ class SlamSystem {
   [[nodiscard]] double bundleAdjustmentSeconds() const {
     return mapper_.totalBundleAdjustmentSeconds();
   }
+  // Empty when loop closing is off.
+  [[nodiscard]] loop::LoopClosingStats loopClosingStats() const;
 
  private:
   SlamOptions options_;
@@ -72,6 +81,7 @@ class SlamSystem {
   feature::OrbExtractor extractor_;
   map::Map map_;
   mapping::LocalMapper mapper_;
+  std::unique_ptr<loop::LoopCloser> loop_closer_;
   tracking::Tracker tracker_;
   std::uint64_t next_frame_id_ = 0;
 };

@@ -44,6 +44,10 @@ Tracker::Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options)
 TrackingResult Tracker::track(map::Frame frame) {
   last_ = std::move(current_);
   current_ = std::move(frame);
+  if (map_.corrections() != seen_corrections_) {
+    seen_corrections_ = map_.corrections();
+    reanchorLastFrame();
+  }
   TrackingResult result;
   if (state_ == TrackingState::kNotInitialised) {
     if (initialise()) state_ = TrackingState::kOk;
@@ -350,6 +354,15 @@ void Tracker::dropTemporaryPoints() {
     if (point && point->numObservations() == 0) point.reset();
   }
   temporary_points_.clear();
+}
+
+void Tracker::reanchorLastFrame() {
+  // The map moved under the last frame (loop correction): its pose follows its reference
+  // keyframe, so the motion model predicts the current frame in the corrected map.
+  if (!last_.has_pose || records_.empty()) return;
+  const FramePoseRecord& record = records_.back();
+  if (record.reference != last_.reference_keyframe.get() || record.reference->bad) return;
+  last_.T_cw = record.T_c_reference * record.reference->T_cw;
 }
 
 void Tracker::recordPose() {

@@ -69,6 +69,7 @@ class Tracker {
   void addNewMapPoints(map::KeyFrame& keyframe);
   void dropTemporaryPoints();
   void recordPose();
+  void reanchorLastFrame();
 
   map::Map& map_;
   KeyFrameSink& sink_;
@@ -86,6 +87,7 @@ class Tracker {
   std::vector<std::shared_ptr<map::MapPoint>> temporary_points_;
   int inliers_ = 0;
   std::vector<FramePoseRecord> records_;
+  std::uint64_t seen_corrections_ = 0;
 };
 
 }  // namespace segslam::tracking

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <set>
+#include <vector>
+
+#include "segslam/map/keyframe.h"
+
+namespace segslam::loop {
+
+// Place recognition for loop closing: proposes old keyframes that may show the same place as a
+// query keyframe. It only proposes; LoopVerifier decides. Called by the loop closer with the map
+// mutex held, so implementations may read the keyframes.
+class LoopCandidateDetector {
+ public:
+  virtual ~LoopCandidateDetector() = default;
+  // Remembers a keyframe as a future candidate.
+  virtual void add(const map::KeyFrame& keyframe) = 0;
+  // Up to `max_candidates` keyframe ids, best first. `covisible` are the query's covisible
+  // keyframes: never candidates (they are no loop), but they tell how similar a keyframe that
+  // truly sees the same place scores.
+  [[nodiscard]] virtual std::vector<std::uint64_t> candidates(
+      const map::KeyFrame& query, const std::set<std::uint64_t>& covisible,
+      std::size_t max_candidates) const = 0;
+};
+
+}  // namespace segslam::loop

@@ -1,0 +1,49 @@
+#include "segslam/loop/loop_closer.h"
+
+#include <gtest/gtest.h>
+
+#include "segslam/io/tum_dataset.h"
+#include "segslam/synth/generator.h"
+#include "segslam/system/sequence_runner.h"
+#include "segslam/testing/test_support.h"
+
+// End to end: a synthetic lap around a room, turning once all the way round and ending where it
+// started, with Kinect-like depth noise at 320x240: the odometry drifts by about 9 cm (ATE 0.094 m
+// without loop closing, 0.074 m with it, measured by bench/loop_closure.sh; the open-loop run is
+// not repeated here to keep the test short). The loop must be found, agree with the ground truth
+// and reduce the error.
+namespace segslam::loop {
+namespace {
+
+using testing::ScopedTempDir;
+
+constexpr double kAteWithoutLoopClosing = 0.094;
+
+TEST(LoopCloser, ClosingTheLapReducesTheDrift) {
+  const ScopedTempDir dir;
+  synth::SynthOptions lap;
+  lap.path = "room";
+  lap.people = 0;
+  lap.frames = 450;
+  lap.width = 320;
+  lap.height = 240;
+  lap.depth_noise = "kinect";
+  lap.seed = 1;
+  synth::generateSequence(lap, dir.path() / "lap");
+  system::SequenceRunOptions options;
+  options.slam.deterministic = true;
+  const auto closed = system::runSequence(io::TumDataset::open(dir.path() / "lap"), options,
+                                          dir.path() / "run", [](const system::FrameStats&) {});
+  ASSERT_TRUE(closed.evaluation.has_value());
+  EXPECT_GE(closed.loops.loops_accepted, 1);
+  EXPECT_LT(closed.evaluation->ate.statistics.rmse, 0.9 * kAteWithoutLoopClosing);
+  ASSERT_EQ(closed.loop_checks.size(), closed.loops.loops.size());
+  for (const auto& check : closed.loop_checks) {
+    ASSERT_TRUE(check.has_value());
+    EXPECT_LT(check->translation_error_m, 0.05);
+    EXPECT_LT(check->rotation_error_deg, 2.0);
+  }
+}
+
+}  // namespace
+}  // namespace segslam::loop
