@@ -118,6 +118,13 @@ cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px
   cv::Mat refined = objectRegions(mask, blocker(cv::Rect(1, 1, mask.cols, mask.rows)), depth,
                                   num_values, object_depths, options);
   refined.setTo(255, (mask != 0) & (depth <= 0.0f));
+  // Parts too thin to hold an interior seed (limbs, small objects) are kept as they are. The
+  // interior grown back by a square reaches every pixel of a thick part, corners included.
+  cv::Mat interior;
+  cv::erode(mask, interior, ellipse(options.core_erosion_px));
+  const int reach = 2 * options.core_erosion_px + 3;
+  cv::dilate(interior, interior, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(reach, reach)));
+  refined.setTo(255, (mask != 0) & (interior == 0));
   return refined;
 }
 

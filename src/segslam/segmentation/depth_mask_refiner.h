@@ -30,8 +30,8 @@ std::vector<float> objectDepths(const cv::Mat& mask, const cv::Mat& depth,
 // instead of being grown blindly in every direction. A region is kept when most of it lies inside
 // the mask and, given object_depths (see objectDepths), when its depth is one of the objects':
 // the background a person has just uncovered is neither. Pixels of the mask without depth are
-// kept. mask: CV_8UC1 (non-zero = object); depth: CV_32FC1 metres (0 = none). Empty depth:
-// unchanged.
+// kept, and so are parts too thin to hold an interior. mask: CV_8UC1 (non-zero = object); depth:
+// CV_32FC1 metres (0 = none). Empty depth: unchanged.
 cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px,
                           const std::vector<float>& object_depths = {},
                           const DepthRefinementOptions& options = {});

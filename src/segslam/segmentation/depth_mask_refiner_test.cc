@@ -53,6 +53,11 @@ TEST(RefineMaskByDepth, RegionsAtAnotherDepthThanTheObjectsAreDropped) {
   EXPECT_EQ(cv::countNonZero(refineMaskByDepth(old_mask, depth, 8) != old_mask), 0);
 }
 
+TEST(RefineMaskByDepth, PartsTooThinForAnInteriorAreKept) {
+  const cv::Mat thin = maskOf(cv::Rect(20, 10, 3, 60));
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(thin, sceneDepth(), 8) != thin), 0);
+}
+
 TEST(ObjectDepths, MedianDepthOfEachLargeEnoughPart) {
   cv::Mat depth = sceneDepth();
   const cv::Rect second(10, 10, 30, 30);

@@ -96,7 +96,12 @@ cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame
   const auto seeds = options_.motion_model == CameraMotionModel::kRigid ? rigidMotionSeeds(tracks)
                                                                         : homographySeeds(tracks);
   if (!seeds) return {};
-  return growObjects(current.depth, *seeds);
+  cv::Mat dynamic = growObjects(current.depth, *seeds);
+  if (cv::countNonZero(dynamic) >
+      options_.max_moving_share * static_cast<double>(dynamic.total())) {
+    return {};
+  }
+  return dynamic;
 }
 
 std::optional<std::vector<cv::Point>> GeometricSegmenter::rigidMotionSeeds(

@@ -25,6 +25,9 @@ struct GeometricOptions {
   double region_depth_range_m = 0.25;  // objects grown from seeds: depth within this of the seed
   int min_seeds_per_object = 5;        // fewer moving corners in a region: noise, not an object
   double max_object_share = 0.4;       // a region larger than this share of the image is background
+  // When more than this share of the image seems to move, the camera motion was misestimated:
+  // nothing can be told about the frame.
+  double max_moving_share = 0.3;
 };
 
 // RGB-D frame as the geometric segmenter sees it.

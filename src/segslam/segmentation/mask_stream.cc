@@ -122,6 +122,7 @@ cv::Mat MaskStream::fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,
   const int lag = static_cast<int>(
       std::min<std::uint64_t>(age * options_.growth_px_per_frame, options_.max_growth_px));
   if (cv::countNonZero(dynamic) == 0) return dynamic;
+  if (age == 0 && !options_.refine_fresh_masks) return dynamic;
   if (!depth.empty()) {
     return refineMaskByDepth(dynamic, depth, lag + options_.min_band_px, latest_->object_depths,
                              options_.refinement);

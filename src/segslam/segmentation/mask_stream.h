@@ -29,6 +29,9 @@ struct MaskStreamOptions {
   int max_growth_px = 40;
   // Even a fresh output is searched this far around (a network sees a downscaled image).
   int min_band_px = 8;
+  // Whether a fresh output (age 0) is snapped to depth too; off for outputs already grown over
+  // depth (geometric segmentation).
+  bool refine_fresh_masks = true;
   DepthRefinementOptions refinement;
 };
 

@@ -81,10 +81,12 @@ segmentation::Segment geometricSegment(const core::Camera& camera,
 constexpr int kSemanticInterval = 5;
 constexpr int kGeometricInterval = 1;
 
-segmentation::MaskStreamOptions streamOptions(bool synchronous, int interval) {
+segmentation::MaskStreamOptions streamOptions(bool synchronous, int interval,
+                                              bool refine_fresh_masks) {
   segmentation::MaskStreamOptions options;
   options.synchronous = synchronous;
   options.interval = interval;
+  options.refine_fresh_masks = refine_fresh_masks;
   return options;
 }
 
@@ -99,12 +101,12 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
   }
   if (usesNetwork(source_)) {
     semantic_ = std::make_unique<segmentation::MaskStream>(
-        semanticSegment(options), streamOptions(synchronous, kSemanticInterval));
+        semanticSegment(options), streamOptions(synchronous, kSemanticInterval, true));
   }
   if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
     geometric_ = std::make_unique<segmentation::MaskStream>(
         geometricSegment(dataset.camera(), options.geometric),
-        streamOptions(synchronous, kGeometricInterval));
+        streamOptions(synchronous, kGeometricInterval, false));
   }
 }
 

@@ -1,0 +1,49 @@
+#include "segslam/system/mask_source.h"
+
+#include <gtest/gtest.h>
+
+#include "segslam/testing/test_support.h"
+#include "segslam/util/error.h"
+
+namespace segslam::system {
+namespace {
+
+MaskSourceOptions withSource(MaskSource source) {
+  MaskSourceOptions options;
+  options.source = source;
+  options.model_config =
+      std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config/models/espnetv2_voc_384.yaml";
+  options.model_file = *testing::sharedDir() / "models" / "espnetv2_voc_384.onnx";
+  return options;
+}
+
+TEST(FrameMaskSource, FusedMasksHoldTheSemanticMaskAndWhatMovesBesideIt) {
+  SEGSLAM_REQUIRE_SHARED(walker, "tum_fr1_xyz_300_walker");
+  const auto dataset = io::TumDataset::open(walker);
+  FrameMaskSource semantic(dataset, withSource(MaskSource::kSemantic), true);
+  FrameMaskSource fused(dataset, withSource(MaskSource::kFused), true);
+  // Frames 68-75: the walker comes into view, the camera moves.
+  for (std::size_t i = 68; i < 76; ++i) {
+    const io::RgbdFrame frame = dataset.loadFrame(i);
+    const cv::Mat semantic_mask = semantic.dynamicMask(frame, i - 68);
+    const cv::Mat fused_mask = fused.dynamicMask(frame, i - 68);
+    ASSERT_EQ(fused_mask.size(), frame.rgb.size()) << i;
+    EXPECT_EQ(cv::countNonZero(semantic_mask & ~fused_mask), 0) << i;
+    EXPECT_LT(cv::countNonZero(fused_mask), 0.5 * static_cast<double>(fused_mask.total())) << i;
+  }
+  EXPECT_EQ(semantic.networkRuns(), fused.networkRuns());
+}
+
+TEST(FrameMaskSource, OracleWithoutMaskListFailsNamingIt) {
+  SEGSLAM_REQUIRE_SHARED(fr1, "tum_fr1_xyz_300");
+  const auto dataset = io::TumDataset::open(fr1);
+  try {
+    FrameMaskSource source(dataset, withSource(MaskSource::kOracle), true);
+    FAIL() << "expected a util::Error";
+  } catch (const util::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("mask.txt"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace segslam::system
