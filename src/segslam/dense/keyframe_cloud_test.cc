@@ -7,7 +7,7 @@
 namespace segslam::dense {
 namespace {
 
-core::Camera smallCamera() {
+core::Camera cloudCamera() {
   core::Camera camera;
   camera.width = 40;
   camera.height = 30;
@@ -34,7 +34,7 @@ KeyFrameCloudOptions pixelExactOptions() {
 }
 
 TEST(KeyFrameCloud, PlaneAtKnownDepthGivesPinholePoints) {
-  const auto camera = smallCamera();
+  const auto camera = cloudCamera();
   const KeyFrameCloudMaker maker(camera, pixelExactOptions());
   const auto cloud = maker.make(plane(camera, 2.0f));
   ASSERT_EQ(cloud.static_points.size(), 40u * 30u);
@@ -54,7 +54,7 @@ TEST(KeyFrameCloud, PlaneAtKnownDepthGivesPinholePoints) {
 }
 
 TEST(KeyFrameCloud, MaskedPixelsGoToTheDynamicLayerAndInvalidDepthIsSkipped) {
-  const auto camera = smallCamera();
+  const auto camera = cloudCamera();
   auto images = plane(camera, 1.0f);
   images.depth(cv::Rect(0, 0, 10, 30)).setTo(0.0f);  // no measurement
   images.depth(cv::Rect(10, 0, 5, 30)).setTo(9.0f);  // beyond max_depth
@@ -73,7 +73,7 @@ TEST(KeyFrameCloud, MaskedPixelsGoToTheDynamicLayerAndInvalidDepthIsSkipped) {
 }
 
 TEST(KeyFrameCloud, DilationKeepsTheObjectBorderOutOfBothLayers) {
-  const auto camera = smallCamera();
+  const auto camera = cloudCamera();
   auto images = plane(camera, 1.0f);
   images.dynamic_mask = cv::Mat::zeros(camera.height, camera.width, CV_8UC1);
   images.dynamic_mask(cv::Rect(30, 0, 10, 30)).setTo(255);
@@ -85,7 +85,7 @@ TEST(KeyFrameCloud, DilationKeepsTheObjectBorderOutOfBothLayers) {
 }
 
 TEST(KeyFrameCloud, DepthDiscontinuitiesAreSkipped) {
-  const auto camera = smallCamera();
+  const auto camera = cloudCamera();
   auto images = plane(camera, 1.0f);
   images.depth(cv::Rect(20, 0, 20, 30)).setTo(2.0f);
   const auto cloud = KeyFrameCloudMaker(camera, pixelExactOptions()).make(images);
@@ -93,7 +93,7 @@ TEST(KeyFrameCloud, DepthDiscontinuitiesAreSkipped) {
 }
 
 TEST(KeyFrameCloud, VoxelsBoundThePointCount) {
-  const auto camera = smallCamera();
+  const auto camera = cloudCamera();
   auto options = pixelExactOptions();
   options.voxel_size = 0.5;
   const auto cloud = KeyFrameCloudMaker(camera, options).make(plane(camera, 2.0f));
@@ -103,7 +103,7 @@ TEST(KeyFrameCloud, VoxelsBoundThePointCount) {
 }
 
 TEST(KeyFrameCloud, WrongImageTypesAreRejected) {
-  const auto camera = smallCamera();
+  const auto camera = cloudCamera();
   const KeyFrameCloudMaker maker(camera, pixelExactOptions());
   auto images = plane(camera, 1.0f);
   images.depth.convertTo(images.depth, CV_16U);

@@ -7,7 +7,7 @@
 namespace segslam::dense {
 namespace {
 
-core::Camera smallCamera() {
+core::Camera builderCamera() {
   core::Camera camera;
   camera.width = 32;
   camera.height = 24;
@@ -38,7 +38,7 @@ geometry::Pose translation(double x, double y, double z) {
 }
 
 TEST(MapBuilder, TwoKeyFramesArePlacedByTheirPoses) {
-  const auto camera = smallCamera();
+  const auto camera = builderCamera();
   MapBuilder builder(camera, testOptions());
   builder.addKeyFrame(0, 1.0, flatView(camera, 1.0f, 50));
   builder.addKeyFrame(1, 2.0, flatView(camera, 1.0f, 200));
@@ -69,7 +69,7 @@ TEST(MapBuilder, TwoKeyFramesArePlacedByTheirPoses) {
 }
 
 TEST(MapBuilder, KeyFramesWithoutPoseAreLeftOutAndRebuildsFollowNewPoses) {
-  const auto camera = smallCamera();
+  const auto camera = builderCamera();
   MapBuilder builder(camera, testOptions());
   builder.addKeyFrame(0, 1.0, flatView(camera, 1.0f, 50));
   builder.addKeyFrame(1, 2.0, flatView(camera, 1.0f, 200));
@@ -86,7 +86,7 @@ TEST(MapBuilder, KeyFramesWithoutPoseAreLeftOutAndRebuildsFollowNewPoses) {
 }
 
 TEST(MapBuilder, BadImagesSurfaceAsErrors) {
-  const auto camera = smallCamera();
+  const auto camera = builderCamera();
   MapBuilder builder(camera, testOptions());
   auto images = flatView(camera, 1.0f, 50);
   images.bgr = cv::Mat(3, 3, CV_8UC3);

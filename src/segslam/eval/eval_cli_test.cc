@@ -13,13 +13,6 @@
 namespace segslam::eval {
 namespace {
 
-std::string readFile(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 struct CliRun {
@@ -35,7 +28,7 @@ CliRun runCli(const std::string& arguments, const std::filesystem::path& temp) {
   const std::string command =
       quoted(SEGSLAM_CLI_PATH) + " " + arguments + " > " + quoted(out) + " 2> " + quoted(err);
   const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile(out), readFile(err)};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, segslam::testing::fileContents(out), segslam::testing::fileContents(err)};
 }
 
 std::string referenceArguments(const std::filesystem::path& dir) {
@@ -56,7 +49,7 @@ TEST(EvalCli, WritesJsonAndPlotsForTheReferencePair) {
   EXPECT_NE(run.out.find("ATE (SE3, 757 pairs)  "), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("rmse 0.016314 m"), std::string::npos) << run.out;
 
-  const auto json = nlohmann::json::parse(readFile(json_file));
+  const auto json = nlohmann::json::parse(segslam::testing::fileContents(json_file));
   EXPECT_EQ(json["ate"]["pairs"], 757);
   EXPECT_NEAR(json["ate"]["translational"]["rmse"].get<double>(), 0.016314, 1e-4);
   EXPECT_NEAR(json["rpe"]["translational"]["rmse"].get<double>(), 0.021809, 1e-4);
@@ -64,7 +57,7 @@ TEST(EvalCli, WritesJsonAndPlotsForTheReferencePair) {
 
   for (const auto* name :
        {"trajectory_top.svg", "trajectory_xyz.svg", "ate_error.svg", "rpe_error.svg"}) {
-    const auto svg = readFile(plots / name);
+    const auto svg = segslam::testing::fileContents(plots / name);
     EXPECT_EQ(svg.rfind("<svg", 0), 0u) << name;
     EXPECT_NE(svg.find("<polyline"), std::string::npos) << name;
   }

@@ -11,13 +11,6 @@
 namespace segslam::eval {
 namespace {
 
-std::string readFile(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // A ground truth that moves in x and z only, so the top view must show x and z.
 TrajectoryEvaluation evaluationInTheXzPlane() {
   TrajectoryEvaluation evaluation;
@@ -39,7 +32,7 @@ TEST(EvalPlots, WritesFourSvgFiles) {
   ASSERT_EQ(files.size(), 4u);
   for (const auto* name :
        {"trajectory_top.svg", "trajectory_xyz.svg", "ate_error.svg", "rpe_error.svg"}) {
-    const auto svg = readFile(folder / name);
+    const auto svg = segslam::testing::fileContents(folder / name);
     EXPECT_EQ(svg.rfind("<svg", 0), 0u) << name;
     EXPECT_NE(svg.find("<polyline"), std::string::npos) << name;
     EXPECT_NE(svg.find("</svg>"), std::string::npos) << name;
@@ -49,11 +42,11 @@ TEST(EvalPlots, WritesFourSvgFiles) {
 TEST(EvalPlots, TopViewShowsTheTwoWidestAxes) {
   const segslam::testing::ScopedTempDir temp;
   writeEvaluationPlots(temp.path(), evaluationInTheXzPlane());
-  const auto top = readFile(temp.path() / "trajectory_top.svg");
+  const auto top = segslam::testing::fileContents(temp.path() / "trajectory_top.svg");
   EXPECT_NE(top.find(">x [m]</text>"), std::string::npos);
   EXPECT_NE(top.find(">z [m]</text>"), std::string::npos);
   EXPECT_EQ(top.find(">y [m]</text>"), std::string::npos);
-  const auto xyz = readFile(temp.path() / "trajectory_xyz.svg");
+  const auto xyz = segslam::testing::fileContents(temp.path() / "trajectory_xyz.svg");
   EXPECT_NE(xyz.find(">y [m]</text>"), std::string::npos);
   EXPECT_NE(xyz.find("estimate (SE3-aligned)"), std::string::npos);
 }

@@ -16,7 +16,7 @@ using testing::writeText;
 
 const cv::Size kSize(8, 6);
 
-core::Camera smallCamera() {
+core::Camera imageCamera() {
   core::Camera camera;
   camera.name = "small";
   camera.width = kSize.width;
@@ -39,25 +39,25 @@ class TumDatasetFrameImages : public ::testing::Test {
 
 TEST_F(TumDatasetFrameImages, ColourIsReadAsBgr) {
   cv::Mat bgr(kSize, CV_8UC3, cv::Scalar(1, 2, 3));
-  const cv::Mat read = readColourImage(write("c.png", bgr), smallCamera());
+  const cv::Mat read = readColourImage(write("c.png", bgr), imageCamera());
   ASSERT_EQ(read.type(), CV_8UC3);
   EXPECT_EQ(read.at<cv::Vec3b>(2, 2), cv::Vec3b(1, 2, 3));
 }
 
 TEST_F(TumDatasetFrameImages, GreyAndBgraColourAreConverted) {
   const cv::Mat grey =
-      readColourImage(write("g.png", cv::Mat(kSize, CV_8UC1, cv::Scalar(77))), smallCamera());
+      readColourImage(write("g.png", cv::Mat(kSize, CV_8UC1, cv::Scalar(77))), imageCamera());
   ASSERT_EQ(grey.type(), CV_8UC3);
   EXPECT_EQ(grey.at<cv::Vec3b>(1, 1), cv::Vec3b(77, 77, 77));
   const cv::Mat bgra = readColourImage(
-      write("a.png", cv::Mat(kSize, CV_8UC4, cv::Scalar(4, 5, 6, 7))), smallCamera());
+      write("a.png", cv::Mat(kSize, CV_8UC4, cv::Scalar(4, 5, 6, 7))), imageCamera());
   ASSERT_EQ(bgra.type(), CV_8UC3);
   EXPECT_EQ(bgra.at<cv::Vec3b>(1, 1), cv::Vec3b(4, 5, 6));
 }
 
 TEST_F(TumDatasetFrameImages, SixteenBitColourIsRejected) {
   const fs::path file = write("c16.png", cv::Mat(kSize, CV_16UC3, cv::Scalar(1000, 0, 0)));
-  EXPECT_EQ(errorMessage([&] { (void)readColourImage(file, smallCamera()); }),
+  EXPECT_EQ(errorMessage([&] { (void)readColourImage(file, imageCamera()); }),
             file.string() +
                 ": colour image must be 8-bit with 1, 3 or 4 channels but is 16-bit "
                 "3-channel");
@@ -65,17 +65,17 @@ TEST_F(TumDatasetFrameImages, SixteenBitColourIsRejected) {
 
 TEST_F(TumDatasetFrameImages, ColourOfAnotherSizeThanTheCameraIsRejected) {
   const fs::path file = write("big.png", cv::Mat(10, 12, CV_8UC3, cv::Scalar(0)));
-  EXPECT_EQ(errorMessage([&] { (void)readColourImage(file, smallCamera()); }),
+  EXPECT_EQ(errorMessage([&] { (void)readColourImage(file, imageCamera()); }),
             file.string() + ": colour image is 12x10 but camera 'small' is 8x6");
 }
 
 TEST_F(TumDatasetFrameImages, MissingOrCorruptFilesAreRejected) {
   const fs::path missing = temp_.path() / "missing.png";
-  EXPECT_EQ(errorMessage([&] { (void)readColourImage(missing, smallCamera()); }),
+  EXPECT_EQ(errorMessage([&] { (void)readColourImage(missing, imageCamera()); }),
             missing.string() + ": image file not found");
   const fs::path corrupt = temp_.path() / "corrupt.png";
   writeText(corrupt, "\x89PNG\r\n\x1a\n truncated");
-  EXPECT_TRUE(contains(errorMessage([&] { (void)readDepthImage(corrupt, smallCamera(), kSize); }),
+  EXPECT_TRUE(contains(errorMessage([&] { (void)readDepthImage(corrupt, imageCamera(), kSize); }),
                        corrupt.string() + ": cannot decode the image"));
 }
 
@@ -83,7 +83,7 @@ TEST_F(TumDatasetFrameImages, DepthIsConvertedToMetresAndZeroStaysZero) {
   cv::Mat raw(kSize, CV_16UC1, cv::Scalar(1500));
   raw.at<std::uint16_t>(0, 0) = 0;
   raw.at<std::uint16_t>(5, 7) = 65535;
-  const cv::Mat depth = readDepthImage(write("d.png", raw), smallCamera(), kSize);
+  const cv::Mat depth = readDepthImage(write("d.png", raw), imageCamera(), kSize);
   ASSERT_EQ(depth.type(), CV_32FC1);
   EXPECT_EQ(depth.at<float>(0, 0), 0.0f);
   EXPECT_FLOAT_EQ(depth.at<float>(1, 1), 1.5f);
@@ -92,13 +92,13 @@ TEST_F(TumDatasetFrameImages, DepthIsConvertedToMetresAndZeroStaysZero) {
 
 TEST_F(TumDatasetFrameImages, DepthMustBeSixteenBitSingleChannelOfTheColourSize) {
   const fs::path eight = write("d8.png", cv::Mat(kSize, CV_8UC1, cv::Scalar(9)));
-  EXPECT_EQ(errorMessage([&] { (void)readDepthImage(eight, smallCamera(), kSize); }),
+  EXPECT_EQ(errorMessage([&] { (void)readDepthImage(eight, imageCamera(), kSize); }),
             eight.string() + ": depth image must be 16-bit 1-channel but is 8-bit 1-channel");
   const fs::path colour = write("dc.png", cv::Mat(kSize, CV_16UC3, cv::Scalar(9)));
-  EXPECT_EQ(errorMessage([&] { (void)readDepthImage(colour, smallCamera(), kSize); }),
+  EXPECT_EQ(errorMessage([&] { (void)readDepthImage(colour, imageCamera(), kSize); }),
             colour.string() + ": depth image must be 16-bit 1-channel but is 16-bit 3-channel");
   const fs::path small = write("ds.png", cv::Mat(3, 4, CV_16UC1, cv::Scalar(9)));
-  EXPECT_EQ(errorMessage([&] { (void)readDepthImage(small, smallCamera(), kSize); }),
+  EXPECT_EQ(errorMessage([&] { (void)readDepthImage(small, imageCamera(), kSize); }),
             small.string() + ": depth image is 4x3 but the colour image is 8x6");
 }
 

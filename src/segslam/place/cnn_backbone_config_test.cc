@@ -92,7 +92,7 @@ TEST(CnnBackboneConfig, BadFilesNameTheFileAndLine) {
 }
 
 TEST(CnnBackboneConfig, ModelFileFromFlagBesideConfigOrModelDir) {
-  testing::ScopedTempDir dir;
+  segslam::testing::ScopedTempDir dir;
   const auto config_file = dir.path() / "configs/backbone.yaml";
   std::filesystem::create_directories(config_file.parent_path());
   const CnnBackboneConfig config = parseCnnBackboneConfig(kValid, config_file);

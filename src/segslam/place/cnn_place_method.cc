@@ -10,6 +10,7 @@
 
 #include "segslam/place/masked_similarity.h"
 #include "segslam/place/union_mask.h"
+#include "segslam/util/elapsed_time.h"
 
 namespace segslam::place {
 
@@ -91,8 +92,7 @@ CnnImageFeatures CnnFeatureBank::compute(const PlaceImage& image) {
     features.layers.push_back(storedLayer(blobs[l], grids_[l]));
   }
   features.static_mask = storedMask(image.static_mask);
-  extraction_ms_ +=
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  extraction_ms_ += util::millisecondsSince(start);
   extraction_cpu_ms_ += 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   return features;
 }

@@ -12,7 +12,7 @@ namespace {
 
 // The shipped Tiny-Darknet config with the model from ../shared/models.
 std::optional<CnnFeatureExtractor> tinyDarknet() {
-  const auto shared = testing::sharedDir();
+  const auto shared = segslam::testing::sharedDir();
   if (!shared) return std::nullopt;
   const auto model = *shared / "models/tiny_darknet_imagenet.onnx";
   if (!std::filesystem::exists(model)) return std::nullopt;

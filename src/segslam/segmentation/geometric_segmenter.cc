@@ -28,21 +28,17 @@ bool isMarked(const cv::Mat& mask, const cv::Point2f& p) {
   return x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<std::uint8_t>(y, x) != 0;
 }
 
-// Corners of `current` and where they were in `previous` (raw pixels), tracked ones only.
-struct Tracks {
-  std::vector<cv::Point2f> current;
-  std::vector<cv::Point2f> previous;
-};
-
 // Lucas-Kanade tracks that do not come back to where they started (occlusion, blur, repeated
 // texture) would look like motion; they are dropped.
 constexpr float kMaxForwardBackwardPx = 1.0f;
 
-Tracks trackCorners(const DepthFrame& previous, const DepthFrame& current, int max_corners) {
-  Tracks tracks;
+// Corners of `current` and where they were in `previous` (raw pixels), tracked ones only.
+void trackCorners(const DepthFrame& previous, const DepthFrame& current, int max_corners,
+                  std::vector<cv::Point2f>& previous_corners,
+                  std::vector<cv::Point2f>& current_corners) {
   std::vector<cv::Point2f> corners;
   cv::goodFeaturesToTrack(current.gray, corners, max_corners, 0.01, 10.0);
-  if (corners.empty()) return tracks;
+  if (corners.empty()) return;
   std::vector<cv::Point2f> back;
   std::vector<cv::Point2f> forth;
   std::vector<std::uint8_t> status;
@@ -55,10 +51,9 @@ Tracks trackCorners(const DepthFrame& previous, const DepthFrame& current, int m
   for (std::size_t i = 0; i < corners.size(); ++i) {
     if (!status[i] || !status_forth[i]) continue;
     if (cv::norm(forth[i] - corners[i]) > kMaxForwardBackwardPx) continue;
-    tracks.current.push_back(corners[i]);
-    tracks.previous.push_back(back[i]);
+    current_corners.push_back(corners[i]);
+    previous_corners.push_back(back[i]);
   }
-  return tracks;
 }
 
 }  // namespace
@@ -71,7 +66,8 @@ CameraMotionModel cameraMotionModelFromName(const std::string& name) {
 
 // Tracked corners in both frames, raw and undistorted, and whether each is already known to move.
 struct GeometricSegmenter::Correspondences {
-  Tracks raw;
+  std::vector<cv::Point2f> previous_raw;
+  std::vector<cv::Point2f> current_raw;
   std::vector<cv::Point2f> previous_un;
   std::vector<cv::Point2f> current_un;
   std::vector<bool> known_dynamic;
@@ -85,10 +81,10 @@ GeometricSegmenter::GeometricSegmenter(const core::Camera& camera, GeometricOpti
 cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame& current,
                                     const cv::Mat& known_dynamic) const {
   Correspondences tracks;
-  tracks.raw = trackCorners(previous, current, options_.max_corners);
-  tracks.previous_un = core::undistortPixels(tracks.raw.previous, camera_);
-  tracks.current_un = core::undistortPixels(tracks.raw.current, camera_);
-  for (const cv::Point2f& p : tracks.raw.current) {
+  trackCorners(previous, current, options_.max_corners, tracks.previous_raw, tracks.current_raw);
+  tracks.previous_un = core::undistortPixels(tracks.previous_raw, camera_);
+  tracks.current_un = core::undistortPixels(tracks.current_raw, camera_);
+  for (const cv::Point2f& p : tracks.current_raw) {
     tracks.known_dynamic.push_back(isMarked(known_dynamic, p));
   }
   tracks.previous_depth = previous.depth;
@@ -112,8 +108,8 @@ std::optional<std::vector<cv::Point>> GeometricSegmenter::rigidMotionSeeds(
   std::vector<std::size_t> track_of;
   std::vector<cv::Point3f> static_points;
   std::vector<cv::Point2f> static_pixels;
-  for (std::size_t i = 0; i < tracks.raw.current.size(); ++i) {
-    const float z = depthAt(tracks.previous_depth, tracks.raw.previous[i]);
+  for (std::size_t i = 0; i < tracks.current_raw.size(); ++i) {
+    const float z = depthAt(tracks.previous_depth, tracks.previous_raw[i]);
     if (z <= 0.0f) continue;
     const Eigen::Vector3d p =
         camera_.backProject(tracks.previous_un[i].x, tracks.previous_un[i].y, z);
@@ -145,7 +141,7 @@ std::optional<std::vector<cv::Point>> GeometricSegmenter::rigidMotionSeeds(
   for (std::size_t j = 0; j < points.size(); ++j) {
     const cv::Mat p = rotation * cv::Mat(cv::Vec3d(points[j].x, points[j].y, points[j].z)) + tvec;
     const double z_predicted = p.at<double>(2);
-    const cv::Point2f& corner = tracks.raw.current[track_of[j]];
+    const cv::Point2f& corner = tracks.current_raw[track_of[j]];
     const float z_observed = depthAt(tracks.current_depth, corner);
     const bool image_motion = cv::norm(predicted[j] - pixels[j]) > options_.reprojection_px;
     const bool depth_motion = z_observed > 0.0f && std::abs(z_predicted - z_observed) >
@@ -175,7 +171,7 @@ std::optional<std::vector<cv::Point>> GeometricSegmenter::homographySeeds(
   std::vector<cv::Point> seeds;
   for (std::size_t i = 0; i < predicted.size(); ++i) {
     if (cv::norm(predicted[i] - tracks.current_un[i]) > options_.reprojection_px) {
-      seeds.push_back(tracks.raw.current[i]);
+      seeds.push_back(tracks.current_raw[i]);
     }
   }
   return seeds;

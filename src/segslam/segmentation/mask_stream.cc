@@ -7,6 +7,8 @@
 #include <chrono>
 #include <opencv2/imgproc.hpp>
 
+#include "segslam/util/elapsed_time.h"
+
 namespace segslam::segmentation {
 
 namespace {
@@ -62,8 +64,7 @@ void MaskStream::work() {
 MaskStream::Result MaskStream::run(const SegmentationJob& job) {
   const auto start = std::chrono::steady_clock::now();
   SemanticMasks masks = segment_(job);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = util::millisecondsSince(start);
   {
     std::lock_guard lock(mutex_);
     ++runs_;

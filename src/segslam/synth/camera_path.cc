@@ -4,12 +4,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "segslam/geometry/angles.h"
+
 namespace segslam::synth {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDegree = kPi / 180.0;
+using geometry::kDegree;
+using geometry::kPi;
 
 const Eigen::Vector3d kXyzBase(0.95, 2.5, 1.45);
 constexpr double kXyzPitch = -17.0 * kDegree;

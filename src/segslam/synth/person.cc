@@ -5,12 +5,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "segslam/geometry/angles.h"
+
 namespace segslam::synth {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDegree = kPi / 180.0;
+using geometry::kDegree;
+using geometry::kPi;
 
 // Body proportions as fractions of the height.
 constexpr double kStepLength = 0.4;

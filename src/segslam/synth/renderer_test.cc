@@ -9,7 +9,7 @@
 namespace segslam::synth {
 namespace {
 
-core::Camera smallCamera() {
+core::Camera renderCamera() {
   core::Camera camera;
   camera.width = 80;
   camera.height = 60;
@@ -39,7 +39,7 @@ TEST(SynthRenderer, FrontoParallelWallHasExactQuantisedDepth) {
   RenderScene scene;
   scene.rects.push_back(wallAt(2.0, 3));
   const auto images =
-      renderFrame(scene, smallCamera(), geometry::Pose::Identity(), DepthNoise::kNone, 1);
+      renderFrame(scene, renderCamera(), geometry::Pose::Identity(), DepthNoise::kNone, 1);
   ASSERT_EQ(images.depth.type(), CV_16UC1);
   ASSERT_EQ(images.rgb.type(), CV_8UC3);
   for (int v = 0; v < 60; ++v) {
@@ -58,7 +58,7 @@ TEST(SynthRenderer, BackSidesAreInvisible) {
   RenderScene scene;
   scene.rects.push_back({flipped(wallAt(2.0, 3).shape), wallAt(2.0, 3).surface});
   const auto images =
-      renderFrame(scene, smallCamera(), geometry::Pose::Identity(), DepthNoise::kNone, 1);
+      renderFrame(scene, renderCamera(), geometry::Pose::Identity(), DepthNoise::kNone, 1);
   EXPECT_EQ(cv::countNonZero(images.depth), 0);
   EXPECT_EQ(cv::countNonZero(images.instances), 0);
 }
@@ -73,7 +73,7 @@ TEST(SynthRenderer, SlantedPlaneDepthIsTheRayIntersection) {
   scene.rects.push_back(
       {Rect{{-10.0, 1.2, -10.0}, Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), 20.0, 30.0},
        {&greyTexture(), 1, core::SemanticClass::kFloor, false}});
-  const core::Camera camera = smallCamera();
+  const core::Camera camera = renderCamera();
   const auto images = renderFrame(scene, camera, T_wc, DepthNoise::kNone, 1);
   int checked = 0;
   for (int v = 0; v < camera.height; ++v) {
@@ -101,7 +101,7 @@ TEST(SynthRenderer, EllipsoidOccludesWallAndIsMaskedWhenDynamic) {
   ball.radii = {0.3, 0.3, 0.3};
   scene.ellipsoids.push_back({ball, {&greyTexture(), 7, core::SemanticClass::kPerson, true}});
   const auto images =
-      renderFrame(scene, smallCamera(), geometry::Pose::Identity(), DepthNoise::kNone, 1);
+      renderFrame(scene, renderCamera(), geometry::Pose::Identity(), DepthNoise::kNone, 1);
   // The centre ray (between the four centre pixels) hits at z = 1.7; the pixels next to it nearly.
   EXPECT_NEAR(depthAt(images, 39, 29) / 5000.0, 1.7, 0.002);
   EXPECT_EQ(images.instances.at<std::uint16_t>(29, 39), 7);
@@ -121,10 +121,10 @@ TEST(SynthRenderer, ResultDoesNotDependOnTheNumberOfThreads) {
   ball.radii = {0.3, 0.5, 0.2};
   scene.ellipsoids.push_back({ball, {&greyTexture(), 7, core::SemanticClass::kPerson, true}});
   const auto parallel =
-      renderFrame(scene, smallCamera(), geometry::Pose::Identity(), DepthNoise::kKinect, 5);
+      renderFrame(scene, renderCamera(), geometry::Pose::Identity(), DepthNoise::kKinect, 5);
   const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
   const auto serial =
-      renderFrame(scene, smallCamera(), geometry::Pose::Identity(), DepthNoise::kKinect, 5);
+      renderFrame(scene, renderCamera(), geometry::Pose::Identity(), DepthNoise::kKinect, 5);
   EXPECT_EQ(cv::norm(parallel.rgb, serial.rgb, cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(parallel.depth, serial.depth, cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(parallel.mask, serial.mask, cv::NORM_INF), 0.0);

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <random>
 
+#include "segslam/geometry/angles.h"
+
 namespace segslam::synth {
 
 namespace {
@@ -163,8 +165,7 @@ std::vector<WalkLane> walkLanes() {
 }
 
 PushMotion chairPush(double duration) {
-  constexpr double kDegree = std::numbers::pi / 180.0;
-  return {placement(3.175, 1.2, 12.0 * kDegree), placement(3.175, 1.75, 0.0), 0.3 * duration,
+  return {placement(3.175, 1.2, 12.0 * geometry::kDegree), placement(3.175, 1.75, 0.0), 0.3 * duration,
           0.55 * duration};
 }
 

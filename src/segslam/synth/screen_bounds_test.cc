@@ -7,7 +7,7 @@
 namespace segslam::synth {
 namespace {
 
-core::Camera smallCamera() {
+core::Camera boundsCamera() {
   core::Camera camera;
   camera.width = 100;
   camera.height = 80;
@@ -21,7 +21,7 @@ TEST(SynthScreenBounds, QuadInFrontProjectsToItsPixelBox) {
   // Corners at z = 2 project to u = 49.5 + 50 * x, v = 39.5 + 50 * y.
   const std::array<Eigen::Vector3d, 4> quad{
       {{-0.2, -0.1, 2.0}, {0.2, -0.1, 2.0}, {0.2, 0.1, 2.0}, {-0.2, 0.1, 2.0}}};
-  const PixelBox box = screenBounds(quad, quadEdges(), smallCamera(), 0.01);
+  const PixelBox box = screenBounds(quad, quadEdges(), boundsCamera(), 0.01);
   EXPECT_EQ(box.u0, 39);
   EXPECT_EQ(box.u1, 60);
   EXPECT_EQ(box.v0, 34);
@@ -32,7 +32,7 @@ TEST(SynthScreenBounds, ClipsAtTheNearPlaneAndTheImage) {
   // A floor-like quad from behind the camera to far in front: clipped, not dropped.
   const std::array<Eigen::Vector3d, 4> floor{
       {{-1.0, 1.0, -1.0}, {1.0, 1.0, -1.0}, {1.0, 1.0, 5.0}, {-1.0, 1.0, 5.0}}};
-  const PixelBox box = screenBounds(floor, quadEdges(), smallCamera(), 0.01);
+  const PixelBox box = screenBounds(floor, quadEdges(), boundsCamera(), 0.01);
   EXPECT_EQ(box.u0, 0);
   EXPECT_EQ(box.u1, 99);
   EXPECT_EQ(box.v0, 59);  // the far edge at z = 5 is at v = 39.5 + 20
@@ -41,9 +41,9 @@ TEST(SynthScreenBounds, ClipsAtTheNearPlaneAndTheImage) {
 
 TEST(SynthScreenBounds, EmptyBehindTheCameraOrOutsideTheImage) {
   const std::array<Eigen::Vector3d, 4> behind{{{-1, -1, -2}, {1, -1, -2}, {1, 1, -2}, {-1, 1, -2}}};
-  EXPECT_TRUE(screenBounds(behind, quadEdges(), smallCamera(), 0.01).empty());
+  EXPECT_TRUE(screenBounds(behind, quadEdges(), boundsCamera(), 0.01).empty());
   const std::array<Eigen::Vector3d, 4> aside{{{5, -1, 2}, {6, -1, 2}, {6, 1, 2}, {5, 1, 2}}};
-  EXPECT_TRUE(screenBounds(aside, quadEdges(), smallCamera(), 0.01).empty());
+  EXPECT_TRUE(screenBounds(aside, quadEdges(), boundsCamera(), 0.01).empty());
 }
 
 }  // namespace

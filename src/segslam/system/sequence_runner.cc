@@ -13,6 +13,7 @@
 #include "segslam/eval/evaluation_plots.h"
 #include "segslam/eval/evaluation_report.h"
 #include "segslam/io/trajectory_io.h"
+#include "segslam/util/elapsed_time.h"
 #include "segslam/util/error.h"
 
 namespace segslam::system {
@@ -121,11 +122,6 @@ void checkLoops(const io::TumDataset& dataset, SequenceRunSummary& summary) {
   }
 }
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
-
 }  // namespace
 
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
@@ -150,7 +146,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       const io::RgbdFrame frame = dataset.loadFrame(i);
       const auto mask_start = std::chrono::steady_clock::now();
       const cv::Mat mask = masks.dynamicMask(frame, i);
-      const double mask_ms = millisecondsSince(mask_start);
+      const double mask_ms = util::millisecondsSince(mask_start);
       stats.push_back(slam.processFrame(frame.timestamp, frame.rgb, frame.depth, mask));
       stats.back().mask_ms = mask_ms;
       stats.back().tracking_ms += mask_ms;

@@ -4,15 +4,11 @@
 #include <opencv2/imgproc.hpp>
 
 #include "segslam/feature/static_mask.h"
+#include "segslam/util/elapsed_time.h"
 
 namespace segslam::system {
 
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 geometry::Pose resolvedPose(const tracking::Tracker::FramePoseRecord& record) {
   // A culled reference keyframe is replaced by its parent, composing the frozen relative pose.
@@ -72,7 +68,7 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
   std::vector<cv::KeyPoint> keypoints;
   cv::Mat descriptors;
   extractor_.extract(gray, mask, keypoints, descriptors);
-  stats.extraction_ms = millisecondsSince(start);
+  stats.extraction_ms = util::millisecondsSince(start);
   stats.keypoints = static_cast<int>(keypoints.size());
   map::Frame frame(stats.frame_id, timestamp, std::move(keypoints), std::move(descriptors), depth_m,
                    mask, camera_);
@@ -87,7 +83,7 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
     mapper_.processQueued();
     if (loop_closer_) loop_closer_->processQueued();
   }
-  stats.tracking_ms = millisecondsSince(start);
+  stats.tracking_ms = util::millisecondsSince(start);
   return stats;
 }
 

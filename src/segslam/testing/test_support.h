@@ -6,8 +6,10 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <random>
+#include <sstream>
 #include <string>
 
 namespace segslam::testing {
@@ -30,6 +32,14 @@ inline std::optional<std::filesystem::path> sharedData(const std::string& relati
   auto dir = sharedDir();
   if (!dir) return std::nullopt;
   return *dir / "data" / relative;
+}
+
+// The whole file as bytes (empty when it cannot be read: tests compare it with what they expect).
+inline std::string fileContents(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
 }
 
 // A fresh, empty directory removed when the object goes out of scope.

@@ -17,13 +17,6 @@ namespace {
 
 using testing::ScopedTempDir;
 
-std::string readFile(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // A server on a free port over a fixture run folder and a one-file web build, answering on a
 // background thread for the test's lifetime.
 class ViewerMapServer : public ::testing::Test {
@@ -71,10 +64,10 @@ TEST_F(ViewerMapServer, ServesThePageAndRunFiles) {
   const auto cloud = client_->Get("/run/map/static.ply");
   ASSERT_TRUE(cloud);
   EXPECT_EQ(cloud->status, 200);
-  EXPECT_EQ(cloud->body, readFile(dir_.path() / "run" / "map" / "static.ply"));
+  EXPECT_EQ(cloud->body, segslam::testing::fileContents(dir_.path() / "run" / "map" / "static.ply"));
   const auto trajectory = client_->Get("/run/CameraTrajectory.txt");
   ASSERT_TRUE(trajectory);
-  EXPECT_EQ(trajectory->body, readFile(dir_.path() / "run" / "CameraTrajectory.txt"));
+  EXPECT_EQ(trajectory->body, segslam::testing::fileContents(dir_.path() / "run" / "CameraTrajectory.txt"));
 }
 
 TEST_F(ViewerMapServer, SendsTheBundleUncompressedAsJavaScript) {
