@@ -28,7 +28,8 @@ CliRun runCli(const std::string& arguments, const std::filesystem::path& temp) {
   const std::string command =
       quoted(SEGSLAM_CLI_PATH) + " " + arguments + " > " + quoted(out) + " 2> " + quoted(err);
   const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, segslam::testing::fileContents(out), segslam::testing::fileContents(err)};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, segslam::testing::fileContents(out),
+          segslam::testing::fileContents(err)};
 }
 
 std::string referenceArguments(const std::filesystem::path& dir) {

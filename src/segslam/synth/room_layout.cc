@@ -165,8 +165,8 @@ std::vector<WalkLane> walkLanes() {
 }
 
 PushMotion chairPush(double duration) {
-  return {placement(3.175, 1.2, 12.0 * geometry::kDegree), placement(3.175, 1.75, 0.0), 0.3 * duration,
-          0.55 * duration};
+  return {placement(3.175, 1.2, 12.0 * geometry::kDegree), placement(3.175, 1.75, 0.0),
+          0.3 * duration, 0.55 * duration};
 }
 
 std::uint16_t buildRoom(SceneBuilder& builder, bool chair_moves) {

@@ -17,7 +17,8 @@ namespace segslam::testing {
 // The shared data folder (../shared beside the project): $SEGSLAM_SHARED_DIR, else
 // <source>/../shared. Empty when neither exists.
 inline std::optional<std::filesystem::path> sharedDir() {
-  if (const char* env = std::getenv("SEGSLAM_SHARED_DIR"); env && std::filesystem::is_directory(env)) {
+  if (const char* env = std::getenv("SEGSLAM_SHARED_DIR");
+      env && std::filesystem::is_directory(env)) {
     return std::filesystem::path(env);
   }
 #ifdef SEGSLAM_SOURCE_DIR
@@ -49,8 +50,8 @@ class ScopedTempDir {
     std::random_device rd;
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "test";
-    path_ = std::filesystem::temp_directory_path() /
-            ("segslam_" + name + "_" + std::to_string(rd()));
+    path_ =
+        std::filesystem::temp_directory_path() / ("segslam_" + name + "_" + std::to_string(rd()));
     std::filesystem::create_directories(path_);
   }
   ~ScopedTempDir() {

@@ -64,10 +64,12 @@ TEST_F(ViewerMapServer, ServesThePageAndRunFiles) {
   const auto cloud = client_->Get("/run/map/static.ply");
   ASSERT_TRUE(cloud);
   EXPECT_EQ(cloud->status, 200);
-  EXPECT_EQ(cloud->body, segslam::testing::fileContents(dir_.path() / "run" / "map" / "static.ply"));
+  EXPECT_EQ(cloud->body,
+            segslam::testing::fileContents(dir_.path() / "run" / "map" / "static.ply"));
   const auto trajectory = client_->Get("/run/CameraTrajectory.txt");
   ASSERT_TRUE(trajectory);
-  EXPECT_EQ(trajectory->body, segslam::testing::fileContents(dir_.path() / "run" / "CameraTrajectory.txt"));
+  EXPECT_EQ(trajectory->body,
+            segslam::testing::fileContents(dir_.path() / "run" / "CameraTrajectory.txt"));
 }
 
 TEST_F(ViewerMapServer, SendsTheBundleUncompressedAsJavaScript) {
