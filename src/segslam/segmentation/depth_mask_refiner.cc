@@ -8,31 +8,38 @@ namespace segslam::segmentation {
 
 namespace {
 
-cv::Mat ellipse(int radius) {
-  return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
+// Pixels within `radius` of the mask (Euclidean): a dilation by a disc whose cost does not grow
+// with the radius, which reaches 48 px for an old mask.
+cv::Mat grownMask(const cv::Mat& mask, int radius) {
+  cv::Mat distance;
+  cv::distanceTransform(mask == 0, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  return distance <= static_cast<float>(radius);
+}
+
+// Pixels more than `radius` inside the mask (an erosion by a disc).
+cv::Mat shrunkMask(const cv::Mat& mask, int radius) {
+  cv::Mat distance;
+  cv::distanceTransform(mask != 0, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  return distance > static_cast<float>(radius);
 }
 
 // floodFill's mask: 1 outside the search band (and on the one-pixel frame it requires), so fills
 // stop there; 0 where the object may extend.
 cv::Mat fillBlocker(const cv::Mat& mask, int band_px) {
-  cv::Mat band;
-  cv::dilate(mask, band, ellipse(band_px));
   cv::Mat blocker(mask.rows + 2, mask.cols + 2, CV_8UC1, cv::Scalar(1));
-  blocker(cv::Rect(1, 1, mask.cols, mask.rows)).setTo(0, band);
+  blocker(cv::Rect(1, 1, mask.cols, mask.rows)).setTo(0, grownMask(mask, band_px));
   return blocker;
 }
 
 // The depth-connected regions reached from the mask's interior, each filled with its own value
 // (2, 3, ...; 1 marks outside the band) in the blocker.
-int fillRegions(const cv::Mat& mask, const cv::Mat& depth, cv::Mat& blocker,
+int fillRegions(const cv::Mat& interior, const cv::Mat& depth, cv::Mat& blocker,
                 const DepthRefinementOptions& options) {
-  cv::Mat interior;
-  cv::erode(mask, interior, ellipse(options.core_erosion_px));
   cv::Mat depth_image = depth.clone();  // floodFill's signature wants a writable image
   const cv::Scalar step(options.max_depth_step_m);
   int next_value = 2;
-  for (int y = 0; y < mask.rows; y += options.seed_step_px) {
-    for (int x = 0; x < mask.cols; x += options.seed_step_px) {
+  for (int y = 0; y < interior.rows; y += options.seed_step_px) {
+    for (int x = 0; x < interior.cols; x += options.seed_step_px) {
       if (interior.at<std::uint8_t>(y, x) == 0 || depth.at<float>(y, x) <= 0.0f) continue;
       if (blocker.at<std::uint8_t>(y + 1, x + 1) != 0) continue;  // already filled
       cv::floodFill(depth_image, blocker, cv::Point(x, y), cv::Scalar(), nullptr, step, step,
@@ -72,7 +79,7 @@ cv::Mat objectRegions(const cv::Mat& mask, const cv::Mat& regions, const cv::Mat
       inside[region[x]] += masked[x] != 0;
     }
   }
-  cv::Mat object = cv::Mat::zeros(mask.size(), CV_8UC1);
+  cv::Mat kept_values = cv::Mat::zeros(1, 256, CV_8UC1);
   for (int value = 2; value < num_values; ++value) {
     const auto area = static_cast<int>(depths[value].size());
     if (area == 0 || 2 * inside[value] < area) continue;
@@ -80,8 +87,10 @@ cv::Mat objectRegions(const cv::Mat& mask, const cv::Mat& regions, const cv::Mat
         !nearAnyDepth(median(depths[value]), object_depths, options.object_depth_tolerance)) {
       continue;
     }
-    object.setTo(255, regions == value);
+    kept_values.at<std::uint8_t>(value) = 255;
   }
+  cv::Mat object;
+  cv::LUT(regions, kept_values, object);
   return object;
 }
 
@@ -113,18 +122,19 @@ cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px
                           const std::vector<float>& object_depths,
                           const DepthRefinementOptions& options) {
   if (depth.empty() || mask.empty() || cv::countNonZero(mask) == 0) return mask.clone();
+  const cv::Mat interior = shrunkMask(mask, options.core_erosion_px);
   cv::Mat blocker = fillBlocker(mask, std::max(band_px, 1));
-  const int num_values = fillRegions(mask, depth, blocker, options) + 1;
+  const int num_values = fillRegions(interior, depth, blocker, options) + 1;
   cv::Mat refined = objectRegions(mask, blocker(cv::Rect(1, 1, mask.cols, mask.rows)), depth,
                                   num_values, object_depths, options);
   refined.setTo(255, (mask != 0) & (depth <= 0.0f));
   // Parts too thin to hold an interior seed (limbs, small objects) are kept as they are. The
   // interior grown back by a square reaches every pixel of a thick part, corners included.
-  cv::Mat interior;
-  cv::erode(mask, interior, ellipse(options.core_erosion_px));
+  cv::Mat thick_parts;
   const int reach = 2 * options.core_erosion_px + 3;
-  cv::dilate(interior, interior, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(reach, reach)));
-  refined.setTo(255, (mask != 0) & (interior == 0));
+  cv::dilate(interior, thick_parts,
+             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(reach, reach)));
+  refined.setTo(255, (mask != 0) & (thick_parts == 0));
   return refined;
 }
 

@@ -106,12 +106,22 @@ SemanticMasks MaskStream::masksFor(std::uint64_t frame_id, const cv::Mat& bgr, c
     }
   }
   previous_ = job.current;
-  SemanticMasks masks{propagator_.propagate(latest_->masks.labels, latest_->frame_id),
-                      propagator_.propagate(latest_->masks.dynamic, latest_->frame_id)};
-  if (masks.labels.empty()) masks.labels = cv::Mat::zeros(bgr.size(), CV_8UC1);
-  if (masks.dynamic.empty()) masks.dynamic = cv::Mat::zeros(bgr.size(), CV_8UC1);
+  SemanticMasks masks = carryLatest(frame_id, bgr.size());
   masks.dynamic = fitToObjects(masks.dynamic, depth, frame_id);
   return masks;
+}
+
+SemanticMasks MaskStream::carryLatest(std::uint64_t frame_id, cv::Size size) {
+  if (!carried_ || carried_->source_id != latest_->frame_id) {
+    carried_ = Carried{latest_->frame_id, latest_->frame_id, latest_->masks};
+  }
+  SemanticMasks masks{propagator_.propagate(carried_->masks.labels, carried_->frame_id),
+                      propagator_.propagate(carried_->masks.dynamic, carried_->frame_id)};
+  if (masks.labels.empty()) masks.labels = cv::Mat::zeros(size, CV_8UC1);
+  if (masks.dynamic.empty()) masks.dynamic = cv::Mat::zeros(size, CV_8UC1);
+  carried_->frame_id = frame_id;
+  carried_->masks = masks;
+  return {masks.labels.clone(), masks.dynamic.clone()};
 }
 
 cv::Mat MaskStream::fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,

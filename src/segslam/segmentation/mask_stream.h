@@ -79,7 +79,16 @@ class MaskStream {
     std::vector<float> object_depths;  // of the dynamic objects, in the segmented frame
   };
 
+  // The newest output moved to the previous frame: each frame moves it one step further, so the
+  // flow fields between the output's frame and now are applied once, not once per frame.
+  struct Carried {
+    std::uint64_t source_id;
+    std::uint64_t frame_id;
+    SemanticMasks masks;
+  };
+
   void work();
+  [[nodiscard]] SemanticMasks carryLatest(std::uint64_t frame_id, cv::Size size);
   void submit(SegmentationJob job);
   [[nodiscard]] Result run(const SegmentationJob& job);
   [[nodiscard]] cv::Mat fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,
@@ -90,6 +99,7 @@ class MaskStream {
   MaskPropagator propagator_;
   StreamFrame previous_;          // the caller's last frame
   std::optional<Result> latest_;  // newest output, on the caller's side
+  std::optional<Carried> carried_;
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;
