@@ -55,8 +55,9 @@ void registerEvalMasksCommand(CLI::App& eval) {
                    "Mask list (timestamp path) of pixels not to score where the ground truth is "
                    "static, e.g. real people the ground truth does not mark")
       ->check(CLI::ExistingFile);
-  command->add_flag("--deterministic", options->evaluation.synchronous,
-                    "Run the network on the calling thread every 5th frame: reproducible");
+  command->add_flag(
+      "--deterministic", options->evaluation.synchronous,
+      "Run the network on the calling thread (every --network-interval frames): reproducible");
   command
       ->add_option("--max-frames", options->evaluation.max_frames,
                    "Evaluate at most this many frames")

@@ -26,6 +26,12 @@ void addMaskOptions(CLI::App& command, MaskArguments& arguments) {
                   "homography")
       ->capture_default_str()
       ->check(CLI::IsMember({"rigid", "homography"}));
+  command
+      .add_option("--network-interval", arguments.network_interval,
+                  "With --deterministic: run the network on every N-th frame (masks are carried "
+                  "to the frames between); 1 scores the network alone")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
 }
 
 system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments) {
@@ -33,6 +39,7 @@ system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments) {
   options.source = system::maskSourceFromName(arguments.source);
   options.model_config = arguments.model_config;
   if (!arguments.model_file.empty()) options.model_file = arguments.model_file;
+  options.network_interval = arguments.network_interval;
   options.geometric.motion_model = segmentation::cameraMotionModelFromName(arguments.camera_motion);
   return options;
 }

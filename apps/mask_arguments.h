@@ -13,9 +13,10 @@ struct MaskArguments {
   std::string model_file;
   std::filesystem::path model_config;
   std::string camera_motion = "rigid";
+  int network_interval = 5;
 };
 
-// Adds --seg, --model-config, --model and --camera-motion to `command`.
+// Adds --seg, --model-config, --model, --camera-motion and --network-interval to `command`.
 void addMaskOptions(CLI::App& command, MaskArguments& arguments);
 
 system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments);

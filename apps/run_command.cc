@@ -36,9 +36,12 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
       "  speed      {:.1f} frames/s end to end, {:.1f} s wall, local BA {:.1f} s, peak RSS {} MB\n",
       s.frames_per_second, s.wall_seconds, s.bundle_adjustment_seconds, s.peak_rss_mb);
   if (s.network_runs > 0) {
+    const std::string where =
+        options.run.slam.deterministic
+            ? fmt::format("inline, every {} frames", options.masks.network_interval)
+            : "own thread";
     fmt::print("  network    ran on {} of {} frames, {:.0f} ms each ({})\n", s.network_runs,
-               s.frames, s.network_mean_ms,
-               options.run.slam.deterministic ? "inline, every 5th frame" : "own thread");
+               s.frames, s.network_mean_ms, where);
   }
   if (s.loop_closing) {
     int true_loops = 0;

@@ -1,8 +1,10 @@
 #include "segslam/segmentation/geometric_segmenter.h"
 
+#include <algorithm>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
+#include <optional>
 #include <vector>
 
 #include "segslam/core/undistortion.h"
@@ -54,6 +56,61 @@ void trackCorners(const DepthFrame& previous, const DepthFrame& current, int max
     current_corners.push_back(corners[i]);
     previous_corners.push_back(back[i]);
   }
+}
+
+// A camera motion found by PnP RANSAC and the correspondences it explains.
+struct RigidMotion {
+  cv::Mat rvec;
+  cv::Mat tvec;
+  std::vector<int> inliers;
+};
+
+std::optional<RigidMotion> solveRigidMotion(const std::vector<cv::Point3f>& points,
+                                            const std::vector<cv::Point2f>& pixels,
+                                            const cv::Mat& k, float reprojection_px) {
+  if (points.size() < static_cast<std::size_t>(kMinStaticCorrespondences)) return std::nullopt;
+  RigidMotion motion;
+  if (!cv::solvePnPRansac(points, pixels, k, cv::noArray(), motion.rvec, motion.tvec, false, 100,
+                          reprojection_px, 0.99, motion.inliers)) {
+    return std::nullopt;
+  }
+  return motion;
+}
+
+float medianDepth(const std::vector<cv::Point3f>& points, const std::vector<int>& chosen) {
+  std::vector<float> depths;
+  for (int i : chosen) depths.push_back(points[static_cast<std::size_t>(i)].z);
+  if (depths.empty()) return 0.0f;
+  const auto middle = depths.begin() + static_cast<std::ptrdiff_t>(depths.size() / 2);
+  std::nth_element(depths.begin(), middle, depths.end());
+  return *middle;
+}
+
+// A person close to the camera can carry as many tracked corners as the whole background, and
+// RANSAC then takes the person's motion for the camera's. The corners the first motion leaves
+// out are tried as a second motion; when it has comparable support and its points lie farther
+// away, it is the camera's: what moves in front of the camera is nearer than the room behind it.
+RigidMotion backgroundMotion(RigidMotion first, const std::vector<cv::Point3f>& points,
+                             const std::vector<cv::Point2f>& pixels, const cv::Mat& k,
+                             float reprojection_px) {
+  std::vector<bool> explained(points.size(), false);
+  for (int i : first.inliers) explained[static_cast<std::size_t>(i)] = true;
+  std::vector<cv::Point3f> other_points;
+  std::vector<cv::Point2f> other_pixels;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (explained[i]) continue;
+    other_points.push_back(points[i]);
+    other_pixels.push_back(pixels[i]);
+  }
+  auto second = solveRigidMotion(other_points, other_pixels, k, reprojection_px);
+  if (!second || 2 * second->inliers.size() < first.inliers.size() ||
+      second->inliers.size() < static_cast<std::size_t>(kMinStaticCorrespondences)) {
+    return first;
+  }
+  if (medianDepth(other_points, second->inliers) <= medianDepth(points, first.inliers)) {
+    return first;
+  }
+  return *second;
 }
 
 }  // namespace
@@ -122,15 +179,14 @@ std::optional<std::vector<cv::Point>> GeometricSegmenter::rigidMotionSeeds(
       static_pixels.push_back(tracks.current_un[i]);
     }
   }
-  if (static_points.size() < static_cast<std::size_t>(kMinStaticCorrespondences))
-    return std::nullopt;
-  cv::Mat rvec;
-  cv::Mat tvec;
   const cv::Mat k = core::cameraMatrix(camera_);
-  if (!cv::solvePnPRansac(static_points, static_pixels, k, cv::noArray(), rvec, tvec, false, 100,
-                          static_cast<float>(options_.reprojection_px) * 0.7f, 0.99)) {
-    return std::nullopt;
-  }
+  const auto threshold = static_cast<float>(options_.reprojection_px) * 0.7f;
+  const auto first = solveRigidMotion(static_points, static_pixels, k, threshold);
+  if (!first) return std::nullopt;
+  const RigidMotion camera_motion =
+      backgroundMotion(*first, static_points, static_pixels, k, threshold);
+  const cv::Mat& rvec = camera_motion.rvec;
+  const cv::Mat& tvec = camera_motion.tvec;
 
   // Seeds: corners whose image position or depth the camera motion does not explain.
   std::vector<cv::Point2f> predicted;

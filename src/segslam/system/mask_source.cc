@@ -76,9 +76,7 @@ segmentation::Segment geometricSegment(const core::Camera& camera,
   };
 }
 
-// The network is slow: it runs every few frames. Geometric segmentation compares consecutive
-// frames, so it runs on every frame it can.
-constexpr int kSemanticInterval = 5;
+// Geometric segmentation compares consecutive frames, so it runs on every frame it can.
 constexpr int kGeometricInterval = 1;
 
 segmentation::MaskStreamOptions streamOptions(bool synchronous, int interval,
@@ -101,7 +99,7 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
   }
   if (usesNetwork(source_)) {
     semantic_ = std::make_unique<segmentation::MaskStream>(
-        semanticSegment(options), streamOptions(synchronous, kSemanticInterval, true));
+        semanticSegment(options), streamOptions(synchronous, options.network_interval, true));
   }
   if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
     geometric_ = std::make_unique<segmentation::MaskStream>(

@@ -30,6 +30,9 @@ struct MaskSourceOptions {
   std::filesystem::path model_config;
   std::optional<std::filesystem::path> model_file;
   segmentation::GeometricOptions geometric;
+  // In synchronous (deterministic) mode the network runs on every this many frames; 1 scores the
+  // network alone, without masks carried between its runs.
+  int network_interval = 5;
 };
 
 // Gives every frame of a sequence its dynamic mask (CV_8UC1, 255 = dynamic; empty = none) from
