@@ -71,9 +71,9 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
   if (s.map) {
     fmt::print(
         "  map        {} static and {} dynamic points, {} objects from {} keyframes "
-        "({:.1f} s on the map thread, {:.1f} s to build)\n",
+        "({:.1f} s CPU for keyframe clouds, {:.1f} s to build)\n",
         s.map->static_points, s.map->dynamic_points, s.map->objects, s.map->keyframes,
-        s.map->keyframe_seconds, s.map->build_seconds);
+        s.map->keyFrameSeconds(), s.map->build_seconds);
   }
   fmt::print("  outputs    {}\n", std::filesystem::absolute(options.out_dir).string());
 }
