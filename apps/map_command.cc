@@ -51,6 +51,11 @@ void registerMapCommand(CLI::App& app) {
                    "Voxel size of the dense map (metres)")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 1.0));
+  command
+      ->add_option("--map-outlier-neighbours", options->rebuild.map.cleaning.outlier_neighbours,
+                   "Neighbours of the map's statistical outlier removal (0: no removal)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100));
   command->callback([options] { mapCommand(*options); });
 }
 

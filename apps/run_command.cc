@@ -128,6 +128,10 @@ void registerRunCommand(CLI::App& app) {
                   "Voxel size of the dense map (metres)")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 1.0));
+  run->add_option("--map-outlier-neighbours", options->run.map.cleaning.outlier_neighbours,
+                  "Neighbours of the map's statistical outlier removal (0: no removal)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100));
   run->callback([options] {
     if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset, "run");
     runCommand(*options);
