@@ -40,13 +40,10 @@ shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
 [[ -d "$shared/data" ]] || { echo "map_quality.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
 mkdir -p "$out" "$root/bench/results"
 walker="$shared/data/tum_fr1_xyz_300_walker"
-[[ -f "$out/synth_people/groundtruth.txt" ]] ||
-  "$segslam" synth --out "$out/synth_people" --seed 1 --people 2 >/dev/null
+cpu_name="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 
-results="$out/results.jsonl"
-: > "$results"
-
-# Runs segslam and appends {configuration, seconds, summary, evaluation} to the results.
+# Runs segslam and appends {configuration, seconds, load, summary, evaluation, objects} to
+# $results.
 measure() {  # name, dataset, masks, eval dataset ("" = none), extra run options...
   local name="$1" dataset="$2" masks="$3" eval_dataset="$4"; shift 4
   local run_dir="$out/runs/${name// /_}"
