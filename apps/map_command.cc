@@ -15,12 +15,19 @@ namespace {
 struct MapOptions : DatasetArguments {
   std::filesystem::path run_dir;
   std::string masks = "oracle";
+  std::filesystem::path model_config =
+      std::filesystem::path(SEGSLAM_CONFIG_DIR) / "models" / "espnetv2_voc_384.yaml";
+  std::filesystem::path model_file;
   system::MapRebuildOptions rebuild;
 };
 
 void mapCommand(MapOptions& options) {
   const auto dataset = openRunDataset(options, options.run_dir);
   options.rebuild.oracle_masks = options.masks == "oracle";
+  if (options.masks == "semantic") {
+    options.rebuild.model_config = options.model_config;
+    if (!options.model_file.empty()) options.rebuild.model_file = options.model_file;
+  }
   const auto s = system::rebuildMap(dataset, options.run_dir, options.rebuild);
   fmt::print(
       "segslam map: {} static and {} dynamic points, {} objects from {} keyframes in "
@@ -38,9 +45,20 @@ void registerMapCommand(CLI::App& app) {
       "Rebuild a run's dense map (map/ in the run folder) from its KeyFrameTrajectory.txt and "
       "the dataset's images");
   addRunFolderOptions(*command, *options, options->run_dir);
-  command->add_option("--seg", options->masks, "Dynamic masks of the keyframes")
-      ->check(CLI::IsMember(std::vector<std::string>{"oracle", "none"}))
+  command
+      ->add_option("--seg", options->masks,
+                   "Dynamic masks of the keyframes: oracle (mask.txt), none, or semantic (the "
+                   "network segments each keyframe; its labels give the objects)")
+      ->check(CLI::IsMember(std::vector<std::string>{"oracle", "none", "semantic"}))
       ->capture_default_str();
+  command
+      ->add_option("--model-config", options->model_config,
+                   "Segmentation network description (YAML) for --seg semantic")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  command->add_option("--model", options->model_file,
+                      "Network file (ONNX) overriding the config's; else the config's path or "
+                      "$SEGSLAM_MODEL_DIR");
   command
       ->add_option("--mask-dilation", options->rebuild.map.keyframe.mask_dilation_px,
                    "Dilation of the dynamic mask before the static map is taken (pixels)")
@@ -51,6 +69,11 @@ void registerMapCommand(CLI::App& app) {
                    "Voxel size of the dense map (metres)")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 1.0));
+  command
+      ->add_option("--map-outlier-neighbours", options->rebuild.map.cleaning.outlier_neighbours,
+                   "Neighbours of the map's statistical outlier removal (0: no removal)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100));
   command->callback([options] { mapCommand(*options); });
 }
 

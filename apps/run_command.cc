@@ -74,9 +74,9 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
   if (s.map) {
     fmt::print(
         "  map        {} static and {} dynamic points, {} objects from {} keyframes "
-        "({:.1f} s on the map thread, {:.1f} s to build)\n",
+        "({:.1f} s CPU for keyframe clouds, {:.1f} s to build)\n",
         s.map->static_points, s.map->dynamic_points, s.map->objects, s.map->keyframes,
-        s.map->keyframe_seconds, s.map->build_seconds);
+        s.map->keyFrameSeconds(), s.map->build_seconds);
   }
   fmt::print("  outputs    {}\n", std::filesystem::absolute(options.out_dir).string());
 }
@@ -131,6 +131,10 @@ void registerRunCommand(CLI::App& app) {
                   "Voxel size of the dense map (metres)")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 1.0));
+  run->add_option("--map-outlier-neighbours", options->run.map.cleaning.outlier_neighbours,
+                  "Neighbours of the map's statistical outlier removal (0: no removal)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100));
   run->callback([options] {
     if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset, "run");
     runCommand(*options);

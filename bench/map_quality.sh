@@ -1,18 +1,22 @@
 #!/usr/bin/env bash
-# Measures the dense map against the targets of the map issue and writes bench/results/maps.md
-# (tables) and bench/results/maps.json (every run's map summary and evaluation).
+# Measures the dense map against the targets of the map issue.
 #
-#   bench/map_quality.sh [--build DIR] [--out DIR] [--runs N]
+#   bench/map_quality.sh [--build DIR] [--out DIR] [--runs N] [--part all|quality|cost|objects]
 #
-# - quality: `segslam run` (threaded, as users run it) on a rendered synthetic sequence with two
-#   walking people and on tum_fr1_xyz_300_walker, each with oracle masks and without masks, then
-#   `segslam eval map`: share of static-map points on the moving people (within 3 cm of their
-#   ground-truth depth), completeness and accuracy against the ground-truth static surface (2 cm),
-#   and on the walker the share within 0.3 m (horizontally, 0-2 m high) of the person's path. The
-#   static tum_fr1_xyz_300 run, scored against the walker's path, shows how much of the true scene
-#   lies in that band anyway.
-# - cost: the walker with oracle masks N times with the map and N times with --no-map
-#   (alternating, default 3 each); process wall and CPU time, medians.
+# - quality (bench/results/maps.md, maps.json): `segslam run` (threaded, as users run it) on a
+#   rendered synthetic sequence with two walking people and on tum_fr1_xyz_300_walker, each with
+#   oracle masks and without masks, then `segslam eval map`: share of static-map points on the
+#   moving people (within 3 cm of their ground-truth depth), completeness and accuracy against the
+#   ground-truth static surface (2 cm), and on the walker the share within 0.3 m (horizontally,
+#   0-2 m high) of the person's path. The static tum_fr1_xyz_300 run, scored against the walker's
+#   path, shows how much of the true scene lies in that band anyway.
+# - cost (bench/results/map_overhead.md, map_overhead.json): tum_fr1_xyz_300, threaded, N times
+#   with the map and N times with --no-map (alternating, default 3 each): process wall and CPU
+#   time, peak RSS, medians, the machine's load average around each run, and where the map's
+#   time goes.
+# - objects (bench/results/map_objects.md, map_objects.json): `segslam run --seg semantic
+#   --deterministic` on tum_fr1_xyz_300 and the walker: the objects the network's labels give, and
+#   how much of the walker's path is left in the static map.
 # Needs ../shared beside the project (or SEGSLAM_SHARED_DIR).
 set -euo pipefail
 
@@ -20,11 +24,13 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$root/build"
 out="$root/out/bench_maps"
 runs=3
+part=all
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --build) build="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --runs) runs="$2"; shift 2 ;;
+    --part) part="$2"; shift 2 ;;
     *) echo "map_quality.sh: unknown option '$1'" >&2; exit 2 ;;
   esac
 done
@@ -34,25 +40,23 @@ shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
 [[ -d "$shared/data" ]] || { echo "map_quality.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
 mkdir -p "$out" "$root/bench/results"
 walker="$shared/data/tum_fr1_xyz_300_walker"
-[[ -f "$out/synth_people/groundtruth.txt" ]] ||
-  "$segslam" synth --out "$out/synth_people" --seed 1 --people 2 >/dev/null
+cpu_name="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 
-results="$out/results.jsonl"
-: > "$results"
-
-# Runs segslam and appends {configuration, seconds, summary, evaluation} to the results.
+# Runs segslam and appends {configuration, seconds, load, summary, evaluation, objects} to
+# $results.
 measure() {  # name, dataset, masks, eval dataset ("" = none), extra run options...
   local name="$1" dataset="$2" masks="$3" eval_dataset="$4"; shift 4
   local run_dir="$out/runs/${name// /_}"
   echo "== $name"
   python3 - "$out/timing.json" "$segslam" --log-level warn run --dataset "$dataset" --seg "$masks" \
     --out "$run_dir" "$@" <<'PY'
-import json, resource, subprocess, sys, time
+import json, os, resource, subprocess, sys, time
+load_before = os.getloadavg()[0]
 start = time.monotonic()
 subprocess.run(sys.argv[2:], check=True, stdout=subprocess.DEVNULL)
 usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-json.dump({"wall": time.monotonic() - start, "cpu": usage.ru_utime + usage.ru_stime},
-          open(sys.argv[1], "w"))
+json.dump({"wall": time.monotonic() - start, "cpu": usage.ru_utime + usage.ru_stime,
+           "load": [load_before, os.getloadavg()[0]]}, open(sys.argv[1], "w"))
 PY
   if [[ -n "$eval_dataset" ]]; then
     "$segslam" --log-level warn eval map --run "$run_dir" --dataset "$eval_dataset" >/dev/null
@@ -61,7 +65,12 @@ PY
 import json, os, sys
 name, run_dir, timing = sys.argv[1], sys.argv[2], json.load(open(sys.argv[3]))
 row = {"configuration": name, "process_seconds": timing["wall"], "cpu_seconds": timing["cpu"],
+       "load_average_1min": timing["load"],
        "summary": json.load(open(os.path.join(run_dir, "summary.json")))}
+objects = os.path.join(run_dir, "map", "objects.json")
+if os.path.exists(objects):
+    row["objects"] = [{k: o[k] for k in ("id", "label", "dynamic", "points", "centroid")}
+                      for o in json.load(open(objects))["objects"]]
 evaluation = os.path.join(run_dir, "map_evaluation.json")
 if os.path.exists(evaluation):
     row["evaluation"] = json.load(open(evaluation))
@@ -69,28 +78,26 @@ print(json.dumps(row))
 PY
 }
 
-measure "synth people oracle" "$out/synth_people" oracle "$out/synth_people"
-measure "synth people masks off" "$out/synth_people" none "$out/synth_people"
-measure "walker oracle" "$walker" oracle "$walker"
-measure "walker masks off" "$walker" none "$walker"
-measure "fr1_xyz_300 (no person) vs walker path" "$shared/data/tum_fr1_xyz_300" none "$walker"
-for run in $(seq 1 "$runs"); do
-  measure "cost walker oracle map $run" "$walker" oracle ""
-  measure "cost walker oracle no-map $run" "$walker" oracle "" --no-map
-done
-
-python3 - "$results" "$root/bench/results" "$runs" <<'PY'
-import json, os, statistics, subprocess, sys
+quality() {
+  [[ -f "$out/synth_people/groundtruth.txt" ]] ||
+    "$segslam" synth --out "$out/synth_people" --seed 1 --people 2 >/dev/null
+  results="$out/quality.jsonl"
+  : > "$results"
+  measure "synth people oracle" "$out/synth_people" oracle "$out/synth_people"
+  measure "synth people masks off" "$out/synth_people" none "$out/synth_people"
+  measure "walker oracle" "$walker" oracle "$walker"
+  measure "walker masks off" "$walker" none "$walker"
+  measure "fr1_xyz_300 (no person) vs walker path" "$shared/data/tum_fr1_xyz_300" none "$walker"
+  python3 - "$results" "$root/bench/results" "$cpu_name" <<'PY'
+import json, os, sys
 rows = [json.loads(line) for line in open(sys.argv[1])]
-out_dir, runs = sys.argv[2], int(sys.argv[3])
-cpu = subprocess.run(["sh", "-c", "grep -m1 'model name' /proc/cpuinfo | cut -d: -f2"],
-                     capture_output=True, text=True).stdout.strip()
+out_dir, cpu = sys.argv[2], sys.argv[3]
 def pct(value):
     return "-" if value is None else f"{100 * value:.2f} %"
 lines = [
-    "# Dense map quality and cost",
+    "# Dense map quality",
     "",
-    f"`bench/map_quality.sh --runs {runs}`: `segslam run` in threaded mode (voxel 1 cm), then "
+    "`bench/map_quality.sh --part quality`: `segslam run` in threaded mode (voxel 1 cm), then "
     "`segslam eval map` in the ground-truth frame (the run's camera poses aligned onto the ground truth's).",
     f"Machine: {cpu}, {os.cpu_count()} cores (shared with other work while measured).",
     "",
@@ -107,34 +114,107 @@ for row in rows:
         f"| {pct(e.get('on_dynamic_share'))} | {pct(e.get('near_person_path_share'))} "
         f"| {pct(e.get('completeness'))} | {pct(e.get('accuracy'))} "
         f"| {e['trajectory_ate_rmse_m']:.4f} |")
-with_map = [r for r in rows if r["configuration"].startswith("cost walker oracle map")]
-without = [r for r in rows if r["configuration"].startswith("cost walker oracle no-map")]
-if with_map and without:
-    t_map = statistics.median(r["process_seconds"] for r in with_map)
-    t_none = statistics.median(r["process_seconds"] for r in without)
-    c_map = statistics.median(r["cpu_seconds"] for r in with_map)
-    c_none = statistics.median(r["cpu_seconds"] for r in without)
-    keyframe_s = statistics.median(r["summary"]["map"]["keyframe_seconds"] for r in with_map)
-    build_s = statistics.median(r["summary"]["map"]["build_seconds"] for r in with_map)
-    rss_map = statistics.median(r["summary"]["peak_rss_mb"] for r in with_map)
-    rss_none = statistics.median(r["summary"]["peak_rss_mb"] for r in without)
-    lines += [
-        "",
-        f"Cost on `tum_fr1_xyz_300_walker` with oracle masks, median of {runs} runs each "
-        "(alternating); process wall time and CPU time (user + system, all threads):",
-        "",
-        "| | wall time [s] | CPU time [s] | peak RSS [MB] |",
-        "| --- | --- | --- | --- |",
-        f"| `--no-map` | {t_none:.2f} | {c_none:.2f} | {rss_none:.0f} |",
-        f"| `--map` (default) | {t_map:.2f} | {c_map:.2f} | {rss_map:.0f} |",
-        f"| overhead | {100 * (t_map / t_none - 1):+.1f} % | {100 * (c_map / c_none - 1):+.1f} % "
-        f"| {rss_map - rss_none:+.0f} |",
-        "",
-        f"With the map: {keyframe_s:.2f} s of keyframe clouds on the map thread during tracking, "
-        f"{build_s:.2f} s to assemble, clean, cluster and write the map after tracking.",
-    ]
 table = "\n".join(lines) + "\n"
 open(os.path.join(out_dir, "maps.md"), "w").write(table)
 json.dump(rows, open(os.path.join(out_dir, "maps.json"), "w"), indent=1)
 print(table)
 PY
+}
+
+cost() {
+  results="$out/cost.jsonl"
+  : > "$results"
+  for run in $(seq 1 "$runs"); do
+    measure "cost map $run" "$shared/data/tum_fr1_xyz_300" none ""
+    measure "cost no-map $run" "$shared/data/tum_fr1_xyz_300" none "" --no-map
+  done
+  python3 - "$results" "$root/bench/results" "$runs" "$cpu_name" <<'PY'
+import json, os, statistics, sys
+rows = [json.loads(line) for line in open(sys.argv[1])]
+out_dir, runs, cpu = sys.argv[2], int(sys.argv[3]), sys.argv[4]
+with_map = [r for r in rows if r["configuration"].startswith("cost map")]
+without = [r for r in rows if r["configuration"].startswith("cost no-map")]
+def median(rows, value):
+    return statistics.median(value(r) for r in rows)
+def loads(rows):
+    return ", ".join(f"{r['load_average_1min'][0]:.1f}-{r['load_average_1min'][1]:.1f}" for r in rows)
+wall = [median(rs, lambda r: r["process_seconds"]) for rs in (without, with_map)]
+cpu_s = [median(rs, lambda r: r["cpu_seconds"]) for rs in (without, with_map)]
+tracking = [median(rs, lambda r: r["summary"]["wall_seconds"]) for rs in (without, with_map)]
+rss = [median(rs, lambda r: r["summary"]["peak_rss_mb"]) for rs in (without, with_map)]
+step = lambda key: median(with_map, lambda r: r["summary"]["map"]["timings"][key])
+build = median(with_map, lambda r: r["summary"]["map"]["build_seconds"])
+m = with_map[0]["summary"]["map"]
+lines = [
+    "# Dense map cost",
+    "",
+    f"`bench/map_quality.sh --part cost --runs {runs}`: `segslam run` (threaded, `--seg none`, "
+    "voxel 1 cm) on `tum_fr1_xyz_300` with the map and with `--no-map`, alternating; medians of "
+    f"{runs} runs each. Machine: {cpu}, {os.cpu_count()} cores, shared with other work: 1-minute "
+    "load average before-after each run in the last column.",
+    "",
+    "| | process wall [s] | tracking loop wall [s] | CPU time [s] | peak RSS [MB] | load |",
+    "| --- | --- | --- | --- | --- | --- |",
+    f"| `--no-map` | {wall[0]:.2f} | {tracking[0]:.2f} | {cpu_s[0]:.2f} | {rss[0]:.0f} | {loads(without)} |",
+    f"| map (default) | {wall[1]:.2f} | {tracking[1]:.2f} | {cpu_s[1]:.2f} | {rss[1]:.0f} | {loads(with_map)} |",
+    f"| overhead | {100 * (wall[1] / wall[0] - 1):+.1f} % | {100 * (tracking[1] / tracking[0] - 1):+.1f} % "
+    f"| {100 * (cpu_s[1] / cpu_s[0] - 1):+.1f} % | {rss[1] - rss[0]:+.0f} | |",
+    "",
+    f"Where the map's time goes (medians; {m['keyframes']} keyframes, {m['static_points']} static "
+    "points): CPU time of the keyframe clouds, mostly on the low-priority map thread beside "
+    f"tracking: back-projection {step('back_projection_cpu_s'):.2f} s, voxelising "
+    f"{step('keyframe_voxels_cpu_s'):.2f} s; after tracking ({build:.2f} s in all, writing "
+    f"included): merging {step('merging_s'):.2f} s, outlier removal "
+    f"{step('outlier_removal_s'):.2f} s, objects {step('objects_s'):.2f} s.",
+]
+table = "\n".join(lines) + "\n"
+open(os.path.join(out_dir, "map_overhead.md"), "w").write(table)
+json.dump(rows, open(os.path.join(out_dir, "map_overhead.json"), "w"), indent=1)
+print(table)
+PY
+}
+
+objects() {
+  results="$out/objects.jsonl"
+  : > "$results"
+  measure "fr1_xyz_300 semantic" "$shared/data/tum_fr1_xyz_300" semantic "" --deterministic
+  measure "walker semantic" "$walker" semantic "$walker" --deterministic
+  python3 - "$results" "$root/bench/results" <<'PY'
+import json, os, sys
+rows = [json.loads(line) for line in open(sys.argv[1])]
+out_dir = sys.argv[2]
+lines = [
+    "# Objects from the network's labels",
+    "",
+    "`bench/map_quality.sh --part objects`: `segslam run --seg semantic --deterministic` (ESPNetv2 "
+    "Pascal VOC, voxel 1 cm); the objects of `map/objects.json`.",
+]
+for row in rows:
+    m = row["summary"]["map"]
+    lines += ["", f"## {row['configuration']}", "",
+              f"{m['static_points']} static and {m['dynamic_points']} dynamic points from "
+              f"{m['keyframes']} keyframes; network ran on {row['summary'].get('network_runs', 0)} frames.",
+              ""]
+    if "evaluation" in row:
+        e = row["evaluation"]
+        share = e.get("near_person_path_share")
+        lines += [f"Static map: {100 * e['on_dynamic_share']:.2f} % of its points on the person "
+                  f"(3 cm), {100 * share:.2f} % within 0.3 m of the person's path.", ""]
+    lines += ["| object | layer | points | centroid [m] |", "| --- | --- | --- | --- |"]
+    for o in row.get("objects", []):
+        c = ", ".join(f"{v:.2f}" for v in o["centroid"])
+        lines.append(f"| {o['id']} | {'dynamic' if o['dynamic'] else 'static'} | {o['points']} | {c} |")
+table = "\n".join(lines) + "\n"
+open(os.path.join(out_dir, "map_objects.md"), "w").write(table)
+json.dump(rows, open(os.path.join(out_dir, "map_objects.json"), "w"), indent=1)
+print(table)
+PY
+}
+
+case "$part" in
+  quality) quality ;;
+  cost) cost ;;
+  objects) objects ;;
+  all) quality; cost; objects ;;
+  *) echo "map_quality.sh: unknown part '$part' (all, quality, cost, objects)" >&2; exit 2 ;;
+esac

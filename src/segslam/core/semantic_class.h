@@ -21,11 +21,15 @@ enum class SemanticClass : std::uint8_t {
   kPerson = 8,
   kMonitor = 9,
   kShelf = 10,
+  // Indoor classes a segmentation network knows but the synthetic scenes do not render.
+  kBottle = 11,
+  kSofa = 12,
+  kPlant = 13,
 };
 
-inline constexpr std::array<std::string_view, 11> kSemanticClassNames = {
-    "none",    "wall", "floor",  "ceiling", "table", "chair",
-    "cabinet", "box",  "person", "monitor", "shelf"};
+inline constexpr std::array<std::string_view, 14> kSemanticClassNames = {
+    "none", "wall",   "floor",   "ceiling", "table",  "chair", "cabinet",
+    "box",  "person", "monitor", "shelf",   "bottle", "sofa",  "plant"};
 
 inline constexpr std::string_view semanticClassName(SemanticClass c) {
   const auto i = static_cast<std::size_t>(c);

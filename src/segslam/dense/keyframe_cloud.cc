@@ -1,5 +1,6 @@
 #include "segslam/dense/keyframe_cloud.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -38,10 +39,21 @@ void requireImage(const cv::Mat& image, int type, cv::Size size, const std::stri
   }
 }
 
+// Neighbouring samples at depth z are stride * z / f apart.
+int strideFor(const core::Camera& camera, const KeyFrameCloudOptions& options) {
+  if (!(options.full_sampling_depth > 0.0)) return 1;
+  const double focal = std::min(camera.fx, camera.fy);
+  const double stride = std::floor(options.voxel_size * focal / options.full_sampling_depth);
+  return static_cast<int>(std::clamp(stride, 1.0, 64.0));
+}
+
 }  // namespace
 
 KeyFrameCloudMaker::KeyFrameCloudMaker(const core::Camera& camera, KeyFrameCloudOptions options)
-    : camera_(camera), options_(options), normalised_(normalisedPixelTable(camera)) {
+    : camera_(camera),
+      options_(options),
+      stride_(strideFor(camera, options)),
+      normalised_(normalisedPixelTable(camera)) {
   if (!(options_.voxel_size > 0.0)) {
     throw std::invalid_argument("KeyFrameCloudMaker: voxel size must be > 0");
   }
@@ -62,6 +74,15 @@ bool KeyFrameCloudMaker::onDepthEdge(const cv::Mat& depth, int row, int col) con
 }
 
 KeyFrameCloud KeyFrameCloudMaker::make(const KeyFrameImages& images) const {
+  return downsample(backProject(images));
+}
+
+KeyFrameCloud KeyFrameCloudMaker::downsample(const KeyFrameCloud& cloud) const {
+  return {voxelDownsample(cloud.static_points, options_.voxel_size),
+          voxelDownsample(cloud.dynamic_points, options_.voxel_size)};
+}
+
+KeyFrameCloud KeyFrameCloudMaker::backProject(const KeyFrameImages& images) const {
   const cv::Size size(camera_.width, camera_.height);
   requireImage(images.bgr, CV_8UC3, size, "colour", false);
   requireImage(images.depth, CV_32FC1, size, "depth", false);
@@ -73,11 +94,11 @@ KeyFrameCloud KeyFrameCloudMaker::make(const KeyFrameImages& images) const {
 
   KeyFrameCloud cloud;
   const auto max_depth = static_cast<float>(options_.max_depth);
-  for (int v = 0; v < size.height; ++v) {
+  for (int v = 0; v < size.height; v += stride_) {
     const auto* depth_row = images.depth.ptr<float>(v);
     const auto* colour_row = images.bgr.ptr<cv::Vec3b>(v);
     const auto* xy_row = normalised_.ptr<cv::Vec2f>(v);
-    for (int u = 0; u < size.width; ++u) {
+    for (int u = 0; u < size.width; u += stride_) {
       const float z = depth_row[u];
       if (!(z > 0.0f) || !(z <= max_depth) || onDepthEdge(images.depth, v, u)) continue;
       const bool dynamic =
@@ -92,8 +113,6 @@ KeyFrameCloud KeyFrameCloudMaker::make(const KeyFrameImages& images) const {
           .add({xy_row[u][0] * z, xy_row[u][1] * z, z}, {bgr[2], bgr[1], bgr[0]}, label, instance);
     }
   }
-  cloud.static_points = voxelDownsample(cloud.static_points, options_.voxel_size);
-  cloud.dynamic_points = voxelDownsample(cloud.dynamic_points, options_.voxel_size);
   return cloud;
 }
 

@@ -26,6 +26,10 @@ struct KeyFrameCloudOptions {
   // Pixels whose depth differs from a 4-neighbour's by more than this share of their own depth
   // lie on a depth discontinuity, where sensors return points between the two surfaces.
   double depth_edge_ratio = 0.05;
+  // Pixels are taken with a stride such that up to this depth neighbouring samples still lie at
+  // most one voxel apart: every voxel a surface crosses keeps points, while a 1 cm map of a
+  // 525 px focal length camera back-projects a quarter of the pixels.
+  double full_sampling_depth = 2.0;
 };
 
 // Both layers of one keyframe, in its camera frame, voxel-downsampled so that a keyframe's
@@ -43,14 +47,20 @@ class KeyFrameCloudMaker {
 
   // Throws std::invalid_argument when an image has the wrong type or size.
   [[nodiscard]] KeyFrameCloud make(const KeyFrameImages& images) const;
+  // make() in two steps, to time them: the sampled pixels' points, then one point per voxel.
+  [[nodiscard]] KeyFrameCloud backProject(const KeyFrameImages& images) const;
+  [[nodiscard]] KeyFrameCloud downsample(const KeyFrameCloud& cloud) const;
 
   [[nodiscard]] const KeyFrameCloudOptions& options() const { return options_; }
+  // Every stride-th pixel of every stride-th row is back-projected.
+  [[nodiscard]] int samplingStride() const { return stride_; }
 
  private:
   [[nodiscard]] bool onDepthEdge(const cv::Mat& depth, int row, int col) const;
 
   core::Camera camera_;
   KeyFrameCloudOptions options_;
+  int stride_ = 1;
   cv::Mat normalised_;  // CV_32FC2: undistorted (x/z, y/z) of every pixel
 };
 

@@ -102,6 +102,20 @@ TEST(KeyFrameCloud, VoxelsBoundThePointCount) {
   EXPECT_LE(cloud.static_points.size(), 25u);
 }
 
+TEST(KeyFrameCloud, CoarseVoxelsSamplePixelsWithAStride) {
+  const auto camera = cloudCamera();
+  auto options = pixelExactOptions();
+  options.voxel_size = 0.1;
+  options.full_sampling_depth = 1.0;  // stride floor(0.1 m * 40 px / 1 m) = 4
+  const KeyFrameCloudMaker maker(camera, options);
+  EXPECT_EQ(maker.samplingStride(), 4);
+  const auto points = maker.backProject(plane(camera, 1.0f)).static_points;
+  EXPECT_EQ(points.size(), 10u * 8u);  // columns 0, 4, ..., 36; rows 0, 4, ..., 28
+  // Neighbouring samples are 4 px * 1 m / 50 px = 8 cm apart, within one voxel.
+  EXPECT_NEAR(points.points[1].x() - points.points[0].x(), 0.08f, 1e-5f);
+  EXPECT_EQ(KeyFrameCloudMaker(camera, pixelExactOptions()).samplingStride(), 1);
+}
+
 TEST(KeyFrameCloud, WrongImageTypesAreRejected) {
   const auto camera = cloudCamera();
   const KeyFrameCloudMaker maker(camera, pixelExactOptions());

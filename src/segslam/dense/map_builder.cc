@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "segslam/util/thread_priority.h"
+
 namespace segslam::dense {
 
 MapBuilder::MapBuilder(const core::Camera& camera, MapBuilderOptions options)
@@ -33,36 +35,47 @@ void MapBuilder::addKeyFrame(std::uint64_t id, double timestamp, KeyFrameImages 
 
 void MapBuilder::finish() {
   std::unique_lock lock(mutex_);
+  // What is still queued is made here rather than by the map thread: that thread runs at a low
+  // priority, and now nothing else is waiting for the CPU.
+  while (!queue_.empty()) makeFront(lock);
   changed_.wait(lock, [this] { return queue_.empty() && !busy_; });
   if (error_) std::rethrow_exception(error_);
 }
 
 void MapBuilder::work() {
+  util::lowerThisThreadsPriority(options_.thread_niceness);
   std::unique_lock lock(mutex_);
   while (true) {
     changed_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
     if (queue_.empty()) return;  // stopping, nothing left
-    QueuedKeyFrame keyframe = std::move(queue_.front());
-    queue_.pop_front();
     busy_ = true;
-    lock.unlock();
-    const auto start = std::chrono::steady_clock::now();
-    KeyFrameCloud cloud;
-    std::exception_ptr error;
-    try {
-      cloud = maker_.make(keyframe.images);
-    } catch (...) {
-      error = std::current_exception();
-    }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    lock.lock();
-    if (error && !error_) error_ = error;
-    if (!error) clouds_[keyframe.timestamp] = {keyframe.id, std::move(cloud)};
-    keyframe_seconds_ += seconds;
+    makeFront(lock);
     busy_ = false;
     changed_.notify_all();
   }
+}
+
+void MapBuilder::makeFront(std::unique_lock<std::mutex>& lock) {
+  QueuedKeyFrame keyframe = std::move(queue_.front());
+  queue_.pop_front();
+  lock.unlock();
+  const double start = util::thisThreadCpuSeconds();
+  double projected = start;
+  KeyFrameCloud cloud;
+  std::exception_ptr error;
+  try {
+    cloud = maker_.backProject(keyframe.images);
+    projected = util::thisThreadCpuSeconds();
+    cloud = maker_.downsample(cloud);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  const double end = util::thisThreadCpuSeconds();
+  lock.lock();
+  if (error && !error_) error_ = error;
+  if (!error) clouds_[keyframe.timestamp] = {keyframe.id, std::move(cloud)};
+  timings_.back_projection += projected - start;
+  timings_.keyframe_voxels += end - projected;
 }
 
 LabelledCloud MapBuilder::worldCloud(const core::Trajectory& keyframe_poses, bool dynamic) const {
@@ -82,22 +95,23 @@ DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses) {
   DenseMap map;
   map.voxel_size = options_.keyframe.voxel_size;
   auto start = std::chrono::steady_clock::now();
-  const auto lap = [&start](const char* step) {
+  const auto lap = [&start](double& seconds) {
     const auto now = std::chrono::steady_clock::now();
-    spdlog::debug("dense map: {} {:.3f} s", step,
-                  std::chrono::duration<double>(now - start).count());
+    seconds = std::chrono::duration<double>(now - start).count();
     start = now;
   };
   LabelledCloud static_points = worldCloud(keyframe_poses, false);
-  lap("merging");
-  map.static_points = removeOutliers(static_points, options_.cleaning);
-  lap("outlier removal");
   map.dynamic_points = worldCloud(keyframe_poses, true);
+  lap(timings_.merging);
+  map.static_points = removeOutliers(static_points, options_.cleaning);
+  lap(timings_.outlier_removal);
   map.objects = clusterObjects(map.static_points, options_.objects);
-  lap("objects");
   auto dynamic_objects = dynamicObjects(map.dynamic_points, options_.objects);
   numberAfter(map.objects, dynamic_objects);
   std::move(dynamic_objects.begin(), dynamic_objects.end(), std::back_inserter(map.objects));
+  lap(timings_.objects);
+  spdlog::debug("dense map: merging {:.3f} s, outlier removal {:.3f} s, objects {:.3f} s",
+                timings_.merging, timings_.outlier_removal, timings_.objects);
   return map;
 }
 
@@ -107,9 +121,9 @@ std::size_t MapBuilder::numKeyFrames() {
   return clouds_.size();
 }
 
-double MapBuilder::keyFrameSeconds() {
+MapTimings MapBuilder::timings() {
   std::lock_guard lock(mutex_);
-  return keyframe_seconds_;
+  return timings_;
 }
 
 }  // namespace segslam::dense

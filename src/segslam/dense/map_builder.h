@@ -20,6 +20,18 @@ struct MapBuilderOptions {
   KeyFrameCloudOptions keyframe;  // its voxel_size is the map's
   CloudCleaningOptions cleaning;
   ObjectMapOptions objects;  // the clustering distance is at least 3 voxels
+  // Niceness of the map thread: tracking comes first, a keyframe cloud can wait.
+  int thread_niceness = 10;
+};
+
+// Where map building spends its time, seconds: CPU time of the map thread for the keyframe
+// clouds (it runs beside tracking), wall time of the last build() (after tracking).
+struct MapTimings {
+  double back_projection = 0.0;
+  double keyframe_voxels = 0.0;
+  double merging = 0.0;  // keyframe clouds into the world frame, voxelised together
+  double outlier_removal = 0.0;
+  double objects = 0.0;
 };
 
 // Builds the dense map of a run off the tracking thread. Keyframes are handed over as they are
@@ -47,8 +59,7 @@ class MapBuilder {
   [[nodiscard]] DenseMap build(const core::Trajectory& keyframe_poses);
 
   [[nodiscard]] std::size_t numKeyFrames();
-  // Time the worker spent on keyframe clouds, seconds.
-  [[nodiscard]] double keyFrameSeconds();
+  [[nodiscard]] MapTimings timings();
 
  private:
   struct QueuedKeyFrame {
@@ -62,6 +73,8 @@ class MapBuilder {
   };
 
   void work();
+  // Makes the cloud of the queue's first keyframe, unlocking `lock` meanwhile.
+  void makeFront(std::unique_lock<std::mutex>& lock);
   [[nodiscard]] LabelledCloud worldCloud(const core::Trajectory& keyframe_poses,
                                          bool dynamic) const;
 
@@ -73,7 +86,7 @@ class MapBuilder {
   bool busy_ = false;
   bool stopping_ = false;
   std::map<double, StoredCloud> clouds_;  // by timestamp
-  double keyframe_seconds_ = 0.0;
+  MapTimings timings_;
   std::exception_ptr error_;
   std::thread worker_;
 };

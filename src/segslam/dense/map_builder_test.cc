@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
+
+#include "segslam/segmentation/semantic_class_map.h"
 
 namespace segslam::dense {
 namespace {
@@ -83,6 +86,50 @@ TEST(MapBuilder, KeyFramesWithoutPoseAreLeftOutAndRebuildsFollowNewPoses) {
   const auto moved = builder.build(corrected);
   ASSERT_EQ(moved.static_points.size(), culled.static_points.size());
   for (const auto& p : moved.static_points.points) EXPECT_NEAR(p.z(), 4.0f, 1e-4f);
+}
+
+TEST(MapBuilder, NetworkLabelsGiveObjectsAndPeopleGoToTheDynamicLayer) {
+  core::Camera camera;
+  camera.width = 64;
+  camera.height = 48;
+  camera.fx = camera.fy = 80.0;  // 1.25 cm per pixel at 1 m
+  camera.cx = 31.5;
+  camera.cy = 23.5;
+  auto images = flatView(camera, 1.0f, 100);
+  // Pascal VOC class indices, as the network gives them: a tv monitor and a person.
+  constexpr std::uint8_t kVocTvMonitor = 20;
+  constexpr std::uint8_t kVocPerson = 15;
+  cv::Mat voc_labels(camera.height, camera.width, CV_8UC1, cv::Scalar(0));
+  voc_labels(cv::Rect(4, 4, 20, 20)).setTo(kVocTvMonitor);
+  voc_labels(cv::Rect(44, 8, 16, 32)).setTo(kVocPerson);
+  const std::vector<std::string> voc_classes = {
+      "background", "aeroplane", "bicycle",     "bird",  "boat",        "bottle", "bus",
+      "car",        "cat",       "chair",       "cow",   "diningtable", "dog",    "horse",
+      "motorbike",  "person",    "pottedplant", "sheep", "sofa",        "train",  "tvmonitor"};
+  images.labels = segmentation::SemanticClassMap(voc_classes).apply(voc_labels);
+  images.dynamic_mask = (voc_labels == kVocPerson);
+
+  auto options = testOptions();
+  options.objects.min_points = 50;
+  MapBuilder builder(camera, options);
+  builder.addKeyFrame(0, 1.0, images);
+  core::Trajectory poses;
+  poses.append(1.0, translation(0.0, 0.0, 0.0));
+  const DenseMap map = builder.build(poses);
+
+  ASSERT_EQ(map.objects.size(), 2u);
+  const MapObject& monitor = map.objects[0];
+  EXPECT_EQ(monitor.id, "monitor_1");
+  EXPECT_FALSE(monitor.dynamic);
+  EXPECT_EQ(monitor.points.size(), 400u);
+  const MapObject& person = map.objects[1];
+  EXPECT_EQ(person.label, "person");
+  EXPECT_TRUE(person.dynamic);
+  EXPECT_EQ(person.points.size(), 16u * 32u);
+  const auto person_label = static_cast<std::uint8_t>(core::SemanticClass::kPerson);
+  EXPECT_EQ(
+      std::count(map.static_points.labels.begin(), map.static_points.labels.end(), person_label),
+      0);
 }
 
 TEST(MapBuilder, BadImagesSurfaceAsErrors) {

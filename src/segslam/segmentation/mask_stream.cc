@@ -1,22 +1,15 @@
 #include "segslam/segmentation/mask_stream.h"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <opencv2/imgproc.hpp>
 
 #include "segslam/util/elapsed_time.h"
+#include "segslam/util/thread_priority.h"
 
 namespace segslam::segmentation {
 
 namespace {
-
-// Linux schedules threads individually, so a thread's niceness can be raised on its own.
-void lowerThisThreadsPriority(int niceness) {
-  if (niceness > 0) setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), niceness);
-}
 
 StreamFrame copyOf(const StreamFrame& frame) {
   return {frame.id, frame.bgr.clone(), frame.depth.clone()};
@@ -40,7 +33,7 @@ MaskStream::~MaskStream() {
 }
 
 void MaskStream::work() {
-  lowerThisThreadsPriority(options_.thread_niceness);
+  util::lowerThisThreadsPriority(options_.thread_niceness);
   while (true) {
     SegmentationJob job;
     {

@@ -16,7 +16,7 @@ MapSummary buildAndWriteMap(dense::MapBuilder& builder, const core::Trajectory& 
   summary.static_points = map.static_points.size();
   summary.dynamic_points = map.dynamic_points.size();
   summary.objects = map.objects.size();
-  summary.keyframe_seconds = builder.keyFrameSeconds();
+  summary.timings = builder.timings();
   summary.build_seconds = secondsSince(start);
   return summary;
 }
@@ -26,8 +26,14 @@ nlohmann::json toJson(const MapSummary& summary) {
           {"static_points", summary.static_points},
           {"dynamic_points", summary.dynamic_points},
           {"objects", summary.objects},
-          {"keyframe_seconds", summary.keyframe_seconds},
-          {"build_seconds", summary.build_seconds}};
+          {"keyframe_seconds", summary.keyFrameSeconds()},
+          {"build_seconds", summary.build_seconds},
+          {"timings",
+           {{"back_projection_cpu_s", summary.timings.back_projection},
+            {"keyframe_voxels_cpu_s", summary.timings.keyframe_voxels},
+            {"merging_s", summary.timings.merging},
+            {"outlier_removal_s", summary.timings.outlier_removal},
+            {"objects_s", summary.timings.objects}}}};
 }
 
 }  // namespace segslam::system

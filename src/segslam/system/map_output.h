@@ -15,8 +15,13 @@ struct MapSummary {
   std::size_t static_points = 0;
   std::size_t dynamic_points = 0;
   std::size_t objects = 0;
-  double keyframe_seconds = 0.0;  // keyframe clouds, on the map thread
-  double build_seconds = 0.0;     // waiting for that thread, assembling, cleaning, writing
+  dense::MapTimings timings;
+  double build_seconds = 0.0;  // waiting for that thread, assembling, cleaning, writing
+
+  // CPU time spent on the keyframe clouds (mostly on the map thread, beside tracking).
+  [[nodiscard]] double keyFrameSeconds() const {
+    return timings.back_projection + timings.keyframe_voxels;
+  }
 };
 
 // Builds the map from the keyframe poses and writes it into `folder` (see dense::writeDenseMap).

@@ -5,6 +5,8 @@
 #include <algorithm>
 
 #include "segslam/io/trajectory_io.h"
+#include "segslam/segmentation/semantic_class_map.h"
+#include "segslam/segmentation/semantic_segmenter.h"
 #include "segslam/util/error.h"
 
 namespace segslam::system {
@@ -24,6 +26,28 @@ std::size_t frameAt(const io::TumDataset& dataset, double timestamp,
   return static_cast<std::size_t>(it - frames.begin());
 }
 
+// A keyframe's own network segmentation, in the map's labels.
+class KeyFrameSegmenter {
+ public:
+  KeyFrameSegmenter(const std::filesystem::path& model_config,
+                    const std::optional<std::filesystem::path>& model_file)
+      : config_(segmentation::readModelConfig(model_config)),
+        segmenter_(config_, segmentation::resolveModelFile(config_, model_config, model_file)),
+        classes_(config_.classes) {}
+
+  void label(dense::KeyFrameImages& images) {
+    const segmentation::SemanticMasks masks = segmenter_.segment(images.bgr);
+    images.dynamic_mask = masks.dynamic;
+    images.labels = classes_.apply(masks.labels);
+    images.instances = cv::Mat();
+  }
+
+ private:
+  segmentation::ModelConfig config_;
+  segmentation::SemanticSegmenter segmenter_;
+  segmentation::SemanticClassMap classes_;
+};
+
 }  // namespace
 
 MapSummary rebuildMap(const io::TumDataset& dataset, const std::filesystem::path& run_dir,
@@ -34,13 +58,17 @@ MapSummary rebuildMap(const io::TumDataset& dataset, const std::filesystem::path
   const auto start = std::chrono::steady_clock::now();
   const auto trajectory_file = run_dir / "KeyFrameTrajectory.txt";
   const auto keyframes = io::readTumTrajectory(trajectory_file);
+  std::optional<KeyFrameSegmenter> network;
+  if (options.model_config) network.emplace(*options.model_config, options.model_file);
   dense::MapBuilder builder(dataset.camera(), options.map);
   std::uint64_t id = 0;
   for (const auto& keyframe : keyframes.poses()) {
     auto frame = dataset.loadFrame(frameAt(dataset, keyframe.timestamp, trajectory_file));
-    builder.addKeyFrame(id++, keyframe.timestamp,
-                        {frame.rgb, frame.depth, options.oracle_masks ? frame.mask : cv::Mat(),
-                         frame.labels, frame.instances});
+    dense::KeyFrameImages images{frame.rgb, frame.depth,
+                                 options.oracle_masks ? frame.mask : cv::Mat(), frame.labels,
+                                 frame.instances};
+    if (network) network->label(images);
+    builder.addKeyFrame(id++, keyframe.timestamp, std::move(images));
   }
   MapSummary summary = buildAndWriteMap(builder, keyframes, run_dir / "map");
   summary.build_seconds = secondsSince(start);

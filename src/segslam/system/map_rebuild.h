@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 
 #include "segslam/dense/map_builder.h"
 #include "segslam/io/tum_dataset.h"
@@ -12,6 +13,10 @@ struct MapRebuildOptions {
   dense::MapBuilderOptions map;
   // Dynamic masks of the keyframes: the dataset's mask.txt (true) or none.
   bool oracle_masks = false;
+  // With a model config: the network segments every keyframe itself (nothing is carried over
+  // from other frames) and its dynamic mask and labels replace the dataset's.
+  std::optional<std::filesystem::path> model_config;
+  std::optional<std::filesystem::path> model_file;  // overrides the config's network file
 };
 
 // Rebuilds <run_dir>/map from the run's KeyFrameTrajectory.txt and the dataset's images of those

@@ -49,8 +49,8 @@ std::string maskSourceName(MaskSource source) {
 
 namespace {
 
-segmentation::Segment semanticSegment(const MaskSourceOptions& options) {
-  const auto config = segmentation::readModelConfig(options.model_config);
+segmentation::Segment semanticSegment(const MaskSourceOptions& options,
+                                      const segmentation::ModelConfig& config) {
   const auto model =
       segmentation::resolveModelFile(config, options.model_config, options.model_file);
   auto segmenter = std::make_shared<segmentation::SemanticSegmenter>(config, model);
@@ -98,8 +98,10 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
                  "oracle masks requested (--seg oracle) but the dataset has no mask.txt");
   }
   if (usesNetwork(source_)) {
+    const auto config = segmentation::readModelConfig(options.model_config);
     semantic_ = std::make_unique<segmentation::MaskStream>(
-        semanticSegment(options), streamOptions(synchronous, options.network_interval, true));
+        semanticSegment(options, config), streamOptions(synchronous, options.network_interval, true));
+    semantic_classes_.emplace(config.classes);
   }
   if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
     geometric_ = std::make_unique<segmentation::MaskStream>(
@@ -108,15 +110,26 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
   }
 }
 
-cv::Mat FrameMaskSource::dynamicMask(const io::RgbdFrame& frame, std::size_t index) {
-  if (source_ == MaskSource::kOracle) return frame.mask;
-  cv::Mat dynamic;
-  if (semantic_) dynamic = semantic_->masksFor(index, frame.rgb, frame.depth).dynamic;
-  if (geometric_) {
-    const cv::Mat moving = geometric_->masksFor(index, frame.rgb, frame.depth, dynamic).dynamic;
-    dynamic = dynamic.empty() ? moving : (dynamic | moving);
+FrameMasks FrameMaskSource::masks(const io::RgbdFrame& frame, std::size_t index) {
+  FrameMasks masks{cv::Mat(), frame.labels, frame.instances};
+  if (source_ == MaskSource::kOracle) {
+    masks.dynamic = frame.mask;
+    return masks;
   }
-  return dynamic;
+  if (semantic_) {
+    const segmentation::SemanticMasks network = semantic_->masksFor(index, frame.rgb, frame.depth);
+    masks = {network.dynamic, semantic_classes_->apply(network.labels), cv::Mat()};
+  }
+  if (geometric_) {
+    const cv::Mat moving =
+        geometric_->masksFor(index, frame.rgb, frame.depth, masks.dynamic).dynamic;
+    masks.dynamic = masks.dynamic.empty() ? moving : (masks.dynamic | moving);
+  }
+  return masks;
+}
+
+cv::Mat FrameMaskSource::dynamicMask(const io::RgbdFrame& frame, std::size_t index) {
+  return masks(frame, index).dynamic;
 }
 
 int FrameMaskSource::networkRuns() const { return semantic_ ? semantic_->runs() : 0; }

@@ -9,6 +9,7 @@
 #include "segslam/io/tum_dataset.h"
 #include "segslam/segmentation/geometric_segmenter.h"
 #include "segslam/segmentation/mask_stream.h"
+#include "segslam/segmentation/semantic_class_map.h"
 
 namespace segslam::system {
 
@@ -35,6 +36,13 @@ struct MaskSourceOptions {
   int network_interval = 5;
 };
 
+// One frame's masks and the labels its map points get.
+struct FrameMasks {
+  cv::Mat dynamic;    // CV_8UC1, 255 = dynamic; empty = none
+  cv::Mat labels;     // CV_8UC1 core::SemanticClass ids; empty = unknown
+  cv::Mat instances;  // CV_16UC1 instance ids, 0 = none; empty = none
+};
+
 // Gives every frame of a sequence its dynamic mask (CV_8UC1, 255 = dynamic; empty = none) from
 // the configured source. Frames must be asked for in order. Throws util::Error when the source
 // cannot work (oracle without mask.txt, missing or broken network).
@@ -44,6 +52,10 @@ class FrameMaskSource {
   FrameMaskSource(const io::TumDataset& dataset, const MaskSourceOptions& options,
                   bool synchronous);
 
+  // With a network (semantic, fused) the labels are the network's, carried to this frame with
+  // its mask and translated into core::SemanticClass ids, and there are no instances; otherwise
+  // they are the dataset's (labels.txt, instances.txt), when it has them.
+  FrameMasks masks(const io::RgbdFrame& frame, std::size_t index);
   cv::Mat dynamicMask(const io::RgbdFrame& frame, std::size_t index);
 
   [[nodiscard]] int networkRuns() const;
@@ -52,6 +64,7 @@ class FrameMaskSource {
  private:
   MaskSource source_;
   std::unique_ptr<segmentation::MaskStream> semantic_;
+  std::optional<segmentation::SemanticClassMap> semantic_classes_;
   std::unique_ptr<segmentation::MaskStream> geometric_;
 };
 

@@ -34,6 +34,27 @@ TEST(FrameMaskSource, FusedMasksHoldTheSemanticMaskAndWhatMovesBesideIt) {
   EXPECT_EQ(semantic.networkRuns(), fused.networkRuns());
 }
 
+TEST(FrameMaskSource, NetworkLabelsBecomeObjectLabelsOfEveryFrame) {
+  SEGSLAM_REQUIRE_SHARED(fr1, "tum_fr1_xyz_300");
+  const auto dataset = io::TumDataset::open(fr1);
+  FrameMaskSource semantic(dataset, withSource(MaskSource::kSemantic), true);
+  // Frame 0 is segmented, frames 1-2 get its labels carried over by optical flow.
+  for (std::size_t i = 0; i < 3; ++i) {
+    const io::RgbdFrame frame = dataset.loadFrame(i);
+    const FrameMasks masks = semantic.masks(frame, i);
+    ASSERT_EQ(masks.labels.type(), CV_8UC1) << i;
+    ASSERT_EQ(masks.labels.size(), frame.rgb.size()) << i;
+    EXPECT_TRUE(masks.instances.empty()) << i;
+    double max_label = 0.0;
+    cv::minMaxLoc(masks.labels, nullptr, &max_label);
+    EXPECT_LE(max_label, static_cast<double>(core::SemanticClass::kPlant)) << i;
+    // The desk's monitors fill a good part of the view.
+    const auto monitor = static_cast<int>(core::SemanticClass::kMonitor);
+    EXPECT_GT(cv::countNonZero(masks.labels == monitor), 0.01 * masks.labels.total()) << i;
+  }
+  EXPECT_EQ(semantic.networkRuns(), 1);
+}
+
 TEST(FrameMaskSource, OracleWithoutMaskListFailsNamingIt) {
   SEGSLAM_REQUIRE_SHARED(fr1, "tum_fr1_xyz_300");
   const auto dataset = io::TumDataset::open(fr1);

@@ -145,14 +145,16 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     for (std::size_t i = 0; i < summary.frames; ++i) {
       const io::RgbdFrame frame = dataset.loadFrame(i);
       const auto mask_start = std::chrono::steady_clock::now();
-      const cv::Mat mask = masks.dynamicMask(frame, i);
+      const FrameMasks frame_masks = masks.masks(frame, i);
       const double mask_ms = util::millisecondsSince(mask_start);
-      stats.push_back(slam.processFrame(frame.timestamp, frame.rgb, frame.depth, mask));
+      stats.push_back(
+          slam.processFrame(frame.timestamp, frame.rgb, frame.depth, frame_masks.dynamic));
       stats.back().mask_ms = mask_ms;
       stats.back().tracking_ms += mask_ms;
       if (map_builder && stats.back().keyframe) {
         map_builder->addKeyFrame(stats.back().frame_id, frame.timestamp,
-                                 {frame.rgb, frame.depth, mask, frame.labels, frame.instances});
+                                 {frame.rgb, frame.depth, frame_masks.dynamic, frame_masks.labels,
+                                  frame_masks.instances});
       }
       if (on_frame) on_frame(stats.back());
     }

@@ -67,7 +67,8 @@ struct SequenceRunSummary {
 // KeyFrameTrajectory.txt (TUM format), frame_log.csv (per-frame timings and state),
 // summary.json, with ground truth evaluation.json and the evaluation plots, and with build_map the
 // dense map (map/static.ply, map/dynamic.ply, map/objects.json, map/objects/*.ply) built from the
-// keyframes' images and final poses, with the dataset's labels and instances when it has them.
+// keyframes' images and final poses, labelled by the network (semantic, fused masks: see
+// FrameMaskSource::masks) or else by the dataset's labels and instances when it has them.
 // Throws util::Error when the dataset lacks what the options need (e.g. oracle masks).
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
                                const std::filesystem::path& out_dir,
