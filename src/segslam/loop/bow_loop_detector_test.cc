@@ -28,6 +28,13 @@ std::vector<place::WordId> weightedWords(const place::Vocabulary& vocabulary, st
   return words;
 }
 
+// The entry's bag of words over all its keypoints, weighted as the detector weighs them.
+void fillBow(Entry& entry, const place::Vocabulary& vocabulary) {
+  entry.bow.clear();
+  for (const place::WordId word : entry.words) entry.bow[word] += vocabulary.idf(word);
+  place::normaliseL1(entry.bow);
+}
+
 TEST(BowLoopDetector, UnionMaskDropsKeypointsOnEitherDynamicArea) {
   const auto vocabulary = shippedVocabulary();
   const BowLoopDetector detector(vocabulary);
@@ -47,6 +54,8 @@ TEST(BowLoopDetector, UnionMaskDropsKeypointsOnEitherDynamicArea) {
       b.pixels.push_back(pixel);
     }
   }
+  fillBow(a, *vocabulary);
+  fillBow(b, *vocabulary);
   const auto kept = BowLoopDetector::keypointsStaticIn(a, b);
   EXPECT_EQ(kept.size(), b.words.size());
   for (const std::size_t k : kept) EXPECT_GE(a.pixels[k].x, 150.0F);
