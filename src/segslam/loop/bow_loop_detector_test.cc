@@ -68,11 +68,11 @@ TEST(BowLoopDetector, UnionMaskDropsKeypointsOnEitherDynamicArea) {
 
 // Keyframes every 20 frames of a synthetic lap round a room (640 frames: 11.25 degrees apart),
 // each covisible with its two predecessors, as the tracker would link them.
-class SyntheticLap : public ::testing::Test {
+class BowLoopDetectorOnALap : public ::testing::Test {
  protected:
   static constexpr int kStep = 20;
 
-  SyntheticLap() : sequence_(lapOptions()) {}
+  BowLoopDetectorOnALap() : sequence_(lapOptions()) {}
 
   static synth::SynthOptions lapOptions() {
     synth::SynthOptions options;
@@ -120,7 +120,7 @@ class SyntheticLap : public ::testing::Test {
   std::vector<std::unique_ptr<map::KeyFrame>> keyframes_;
 };
 
-TEST_F(SyntheticLap, RevisitedStartIsACandidate) {
+TEST_F(BowLoopDetectorOnALap, RevisitedStartIsACandidate) {
   for (int frame = 0; frame <= 600; frame += kStep) addKeyFrame(frame);
   // 10 frames before the end: between the last keyframe and the first, seen 11 degrees apart.
   const map::KeyFrame& query = addKeyFrame(630);
@@ -130,7 +130,7 @@ TEST_F(SyntheticLap, RevisitedStartIsACandidate) {
   EXPECT_LE(found.front(), 1U);  // the lap's first keyframes
 }
 
-TEST_F(SyntheticLap, PlaceSeenForTheFirstTimeHasNoCandidate) {
+TEST_F(BowLoopDetectorOnALap, PlaceSeenForTheFirstTimeHasNoCandidate) {
   for (int frame = 0; frame <= 300; frame += kStep) addKeyFrame(frame);
   const map::KeyFrame& query = addKeyFrame(320);  // half way round: new walls
   BowLoopDetector detector(shippedVocabulary());
