@@ -8,6 +8,7 @@
 #include "mask_arguments.h"
 #include "segslam/io/camera_config.h"
 #include "segslam/io/tum_dataset.h"
+#include "segslam/place/vocabulary.h"
 #include "segslam/system/sequence_runner.h"
 #include "segslam/util/logging.h"
 #include "segslam/util/progress.h"
@@ -20,10 +21,30 @@ namespace {
 constexpr double kFalseLoopTranslationM = 0.1;
 constexpr double kFalseLoopRotationDeg = 5.0;
 
+std::filesystem::path defaultVocabularyFile() {
+  return std::filesystem::path(SEGSLAM_CONFIG_DIR) / place::kDefaultVocabularyFile;
+}
+
 struct RunOptions : DatasetArguments {
   MaskArguments masks;
   system::SequenceRunOptions run;
+  std::string loop_detector = "bow";
+  std::filesystem::path vocabulary = defaultVocabularyFile();
 };
+
+// Only the shipped vocabulary may be missing (a checkout without config/): loop closing then
+// falls back to the descriptor vote. A vocabulary the user names must load.
+void loadLoopVocabulary(RunOptions& options) {
+  if (!options.run.slam.loop_closing || options.loop_detector != "bow") return;
+  if (options.vocabulary == defaultVocabularyFile() &&
+      !std::filesystem::exists(options.vocabulary)) {
+    spdlog::warn("no vocabulary at {}: loop candidates by descriptor vote",
+                 options.vocabulary.string());
+    return;
+  }
+  options.run.slam.loop_vocabulary =
+      std::make_shared<const place::Vocabulary>(place::Vocabulary::load(options.vocabulary));
+}
 
 void printSummary(const RunOptions& options, const system::SequenceRunSummary& s) {
   fmt::print("\nsegslam run: {} (masks: {})\n", options.dataset.string(), options.masks.source);
@@ -52,8 +73,8 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
                           check->rotation_error_deg < kFalseLoopRotationDeg;
       ++(agrees ? true_loops : false_loops);
     }
-    fmt::print("  loops      {} accepted of {} verified candidates", s.loops.loops_accepted,
-               s.loops.consistent_candidates);
+    fmt::print("  loops      {} accepted of {} verified candidates ({} detector)",
+               s.loops.loops_accepted, s.loops.consistent_candidates, s.loops.detector);
     if (true_loops + false_loops > 0) {
       fmt::print(" ({} within {:.2f} m and {:.0f} deg of ground truth, {} not)", true_loops,
                  kFalseLoopTranslationM, kFalseLoopRotationDeg, false_loops);
@@ -84,6 +105,7 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
 void runCommand(RunOptions& options) {
   const auto dataset = openDataset(options);
   options.run.masks = maskSourceOptions(options.masks);
+  loadLoopVocabulary(options);
 
   std::filesystem::create_directories(options.out_dir);
   util::addLogFile(options.out_dir / "run.log");
@@ -119,6 +141,17 @@ void registerRunCommand(CLI::App& app) {
          "Consecutive keyframes that must propose the same place before a loop is verified")
       ->capture_default_str()
       ->check(CLI::Range(1, 10));
+  run->add_option("--keyframes-after-loop", options->run.slam.loop.keyframes_after_loop,
+                  "Keyframes made after a loop correction before the next loop is sought")
+      ->capture_default_str();
+  run->add_option("--loop-detector", options->loop_detector,
+                  "Loop candidates: bow (bag of words with the union mask, needs the vocabulary) "
+                  "or vote (descriptor vote, no vocabulary)")
+      ->check(CLI::IsMember({"bow", "vote"}))
+      ->capture_default_str();
+  run->add_option("--vocabulary", options->vocabulary,
+                  "Bag-of-words vocabulary of the bow loop detector (segslam vocab train)")
+      ->capture_default_str();
   run->add_flag("--deterministic", options->run.slam.deterministic,
                 "Run local mapping inline after each keyframe: reproducible results, slower");
   run->add_option("--seed", options->run.seed, "Seed of the random number generators")

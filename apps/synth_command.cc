@@ -32,6 +32,9 @@ void addOptions(CLI::App& command, SynthArguments& args) {
                   "way round, ends at its start pose; needs >= 240 frames) or static")
       ->check(CLI::IsMember(synth::cameraPathNames()))
       ->capture_default_str();
+  command.add_option("--laps", o.laps, "Laps of the loop or room path (>= 240 frames each)")
+      ->check(CLI::Range(1, synth::kSynthMaxLaps))
+      ->capture_default_str();
   command.add_option("--people", o.people, "Number of walking people (0 = static scene)")
       ->check(CLI::Range(0, synth::kSynthMaxPeople))
       ->capture_default_str();
@@ -69,9 +72,9 @@ void runSynth(const SynthArguments& args) {
   const synth::SynthOptions& o = args.options;
   synth::validateOptions(o);  // before the progress bar starts drawing
   spdlog::info(
-      "synth: {} frames {}x{}, path {}, {} people at {} m/s, moved furniture {}, "
+      "synth: {} frames {}x{}, path {} ({} laps), {} people at {} m/s, moved furniture {}, "
       "depth noise {}, seed {}",
-      o.frames, o.width, o.height, o.path, o.people, o.person_speed,
+      o.frames, o.width, o.height, o.path, o.laps, o.people, o.person_speed,
       o.moved_furniture ? "on" : "off", o.depth_noise, o.seed);
   util::ProgressBar bar("synth", static_cast<std::size_t>(o.frames));
   const auto summary = synth::generateSequence(o, args.out, [&](int, int) { bar.advance(); });

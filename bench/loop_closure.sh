@@ -1,21 +1,26 @@
 #!/usr/bin/env bash
-# Loop closure: ATE with loop closing on and off, loops accepted and whether each agrees with the
-# ground truth, on a drifting synthetic lap and on the sequences the issue names. Writes
+# Loop closure: ATE with loop closing off and on (bag-of-words candidates with the union mask, the
+# default, and the descriptor vote), loops accepted and whether each agrees with the ground truth,
+# on drifting synthetic room laps and on the sequences the issue names. Writes
 # bench/results/loop_closure.md and bench/results/loop_closure.json.
 #
-#   bench/loop_closure.sh [--build DIR] [--out DIR]
+#   bench/loop_closure.sh [--build DIR] [--out DIR] [--reuse]
 #
-# Runs `segslam run --deterministic` (reproducible figures). A loop whose verified relative pose
-# is more than 0.1 m or 5 degrees from the ground truth's counts as false.
+# --reuse keeps the runs of an earlier call that finished (their summary.json exists).
+#
+# Runs `segslam run --deterministic --no-map` (reproducible figures). A loop whose verified
+# relative pose is more than 0.1 m or 5 degrees from the ground truth's counts as false.
 set -euo pipefail
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$root/build"
 out="$root/out/bench_loop"
+reuse=false
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --build) build="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
+    --reuse) reuse=true; shift ;;
     *) echo "loop_closure.sh: unknown option '$1'" >&2; exit 2 ;;
   esac
 done
@@ -29,6 +34,8 @@ render() {  # name, synth options...
   [[ -f "$out/$name/groundtruth.txt" ]] || "$segslam" synth --out "$out/$name" --seed 1 "$@" >/dev/null
 }
 render room_320 --path room --people 0 --frames 450 --width 320 --height 240 --depth-noise kinect
+render room_320_2laps --path room --laps 2 --people 0 --frames 900 --width 320 --height 240 --depth-noise kinect
+render room_2laps_people --path room --laps 2 --people 2 --frames 900 --width 320 --height 240 --depth-noise kinect
 render room_600 --path room --people 0 --frames 600 --depth-noise kinect
 render room_people --path room --people 2 --frames 600 --depth-noise kinect
 render xyz_people --path xyz --people 2
@@ -36,6 +43,9 @@ render xyz_people --path xyz --people 2
 # name | dataset | extra run options
 configurations=(
   "synthetic room lap 320x240|$out/room_320|--seg none"
+  "synthetic room, 2 laps 320x240|$out/room_320_2laps|--seg none"
+  "synthetic room, 2 laps 320x240, 2 people, oracle|$out/room_2laps_people|--seg oracle"
+  "synthetic room, 2 laps 320x240, 2 people, masks off|$out/room_2laps_people|--seg none"
   "synthetic room lap 640x480|$out/room_600|--seg none"
   "synthetic room lap, 2 people, oracle|$out/room_people|--seg oracle"
   "synthetic xyz, 2 people, oracle|$out/xyz_people|--seg oracle"
@@ -53,13 +63,15 @@ results="$out/summaries.jsonl"
 : > "$results"
 for configuration in "${configurations[@]}"; do
   IFS='|' read -r name dataset extra <<< "$configuration"
-  for mode in on off; do
+  for mode in off bow vote; do
     run_dir="$out/runs/${name//[ ,]/_}_$mode"
-    flag=""
+    flag="--loop-detector $mode"
     [[ $mode == off ]] && flag="--no-loop-closing"
-    echo "== $name, loop closing $mode"
+    echo "== $name, loop closing: $mode"
     # shellcheck disable=SC2086
-    "$segslam" --log-level warn run --deterministic --dataset "$dataset" --out "$run_dir" $extra $flag >/dev/null
+    [[ $reuse == true && -f "$run_dir/summary.json" ]] ||
+      "$segslam" --log-level warn run --deterministic --no-map --dataset "$dataset" --out "$run_dir" \
+      $extra $flag >/dev/null
     python3 - "$name" "$mode" "$run_dir/summary.json" >> "$results" <<'PY'
 import json, sys
 summary = json.load(open(sys.argv[3]))
@@ -69,29 +81,45 @@ PY
   done
 done
 
-python3 - "$results" "$root/bench/results" <<'PY'
+python3 - "$results" "$root/bench/results" "$(uptime)" <<'PY'
 import json, sys
 rows = [json.loads(line) for line in open(sys.argv[1])]
-out_dir = sys.argv[2]
+out_dir, load = sys.argv[2], sys.argv[3].strip()
 by_name = {}
 for row in rows:
     by_name.setdefault(row["configuration"], {})[row["loop_mode"]] = row
-lines = ["# Loop closure", "",
-         "`bench/loop_closure.sh`: `segslam run --deterministic`, loop closing on and off. A loop is",
-         "false when its verified relative pose is more than 0.1 m or 5 degrees from the ground truth's.", "",
-         "| sequence | ATE off (m) | ATE on (m) | change | loops accepted | false loops | worst loop error (m) |",
-         "| --- | --- | --- | --- | --- | --- | --- |"]
-for name, modes in by_name.items():
-    on, off = modes["on"], modes["off"]
-    loops = on.get("loop_closing", {}).get("loops", [])
+
+def loop_figures(run):
+    loops = run.get("loop_closing", {}).get("loops", [])
     checked = [l for l in loops if "ground_truth_translation_error_m" in l]
-    errors = [l["ground_truth_translation_error_m"] for l in checked]
     false_loops = sum(1 for l in checked if l["ground_truth_translation_error_m"] > 0.1
                       or l["ground_truth_rotation_error_deg"] > 5.0)
-    ate_on, ate_off = on.get("ate_rmse_m"), off.get("ate_rmse_m")
-    change = f"{100 * (ate_on - ate_off) / ate_off:+.0f} %" if ate_on and ate_off else "-"
-    worst = f"{max(errors):.3f}" if errors else "-"
-    lines.append(f"| {name} | {ate_off:.4f} | {ate_on:.4f} | {change} | {len(loops)} | {false_loops} | {worst} |")
+    worst = max((l["ground_truth_translation_error_m"] for l in checked), default=None)
+    return loops, false_loops, worst
+
+def change(on, off):
+    return f"{100 * (on - off) / off:+.0f} %" if on is not None and off else "-"
+
+lines = ["# Loop closure", "",
+         "`bench/loop_closure.sh`: `segslam run --deterministic --no-map`, loop closing off, on with",
+         "bag-of-words candidates and the union mask (`bow`, the default) and on with the descriptor",
+         "vote (`vote`). A loop is false when its verified relative pose is more than 0.1 m or",
+         "5 degrees from the ground truth's. Loops: accepted / false, with the worst translation",
+         f"error and the query keyframes. Load while measuring: `{load}`.", "",
+         "| sequence | keyframes | ATE off (m) | ATE bow (m) | change | loops bow | ATE vote (m) | change | loops vote |",
+         "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+for name, modes in by_name.items():
+    off = modes["off"]
+    cells = [name, str(off.get("keyframes", "-")), f"{off.get('ate_rmse_m', float('nan')):.4f}"]
+    for mode in ("bow", "vote"):
+        run = modes[mode]
+        loops, false_loops, worst = loop_figures(run)
+        queries = ",".join(str(l["query_keyframe"]) for l in loops)
+        worst_text = f", worst {worst:.3f} m" if worst is not None else ""
+        cells += [f"{run.get('ate_rmse_m', float('nan')):.4f}",
+                  change(run.get("ate_rmse_m"), off.get("ate_rmse_m")),
+                  f"{len(loops)} / {false_loops}{worst_text}" + (f" (kf {queries})" if queries else "")]
+    lines.append("| " + " | ".join(cells) + " |")
 open(f"{out_dir}/loop_closure.md", "w").write("\n".join(lines) + "\n")
 json.dump(rows, open(f"{out_dir}/loop_closure.json", "w"), indent=1)
 print("\n".join(lines))

@@ -28,6 +28,7 @@ class DescriptorVoteDetector : public LoopCandidateDetector {
  public:
   explicit DescriptorVoteDetector(DescriptorVoteOptions options = {});
 
+  [[nodiscard]] std::string name() const override { return "vote"; }
   void add(const map::KeyFrame& keyframe) override;
   [[nodiscard]] std::vector<std::uint64_t> candidates(const map::KeyFrame& query,
                                                       const std::set<std::uint64_t>& covisible,

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "segslam/map/keyframe.h"
@@ -15,6 +16,8 @@ namespace segslam::loop {
 class LoopCandidateDetector {
  public:
   virtual ~LoopCandidateDetector() = default;
+  // Short name for logs and summary.json.
+  [[nodiscard]] virtual std::string name() const = 0;
   // Remembers a keyframe as a future candidate.
   virtual void add(const map::KeyFrame& keyframe) = 0;
   // Up to `max_candidates` keyframe ids, best first. `covisible` are the query's covisible

@@ -85,7 +85,9 @@ LoopCloser::LoopCloser(map::Map& map, mapping::LocalMapper& mapper,
       mapper_(mapper),
       detector_(std::move(detector)),
       options_(options),
-      consistency_(options.consecutive_queries) {}
+      consistency_(options.consecutive_queries) {
+  stats_.detector = detector_->name();
+}
 
 LoopCloser::~LoopCloser() { finish(); }
 

@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 #include <set>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -51,6 +52,7 @@ struct LoopRecord {
 };
 
 struct LoopClosingStats {
+  std::string detector;           // LoopCandidateDetector::name()
   int consistent_candidates = 0;  // candidates that reached geometric verification
   int loops_accepted = 0;
   int global_bas_completed = 0;

@@ -10,8 +10,9 @@
 // End to end: a synthetic lap around a room, turning once all the way round and ending where it
 // started, with Kinect-like depth noise at 320x240: the odometry drifts by about 9 cm (ATE 0.094 m
 // without loop closing, 0.074 m with it, measured by bench/loop_closure.sh; the open-loop run is
-// not repeated here to keep the test short). The loop must be found, agree with the ground truth
-// and reduce the error.
+// not repeated here to keep the test short). The loop must be found by the default candidate
+// detector (bag of words with the shipped vocabulary), agree with the ground truth and reduce the
+// error.
 namespace segslam::loop {
 namespace {
 
@@ -32,9 +33,12 @@ TEST(LoopCloser, ClosingTheLapReducesTheDrift) {
   synth::generateSequence(lap, dir.path() / "lap");
   system::SequenceRunOptions options;
   options.slam.deterministic = true;
+  options.slam.loop_vocabulary = std::make_shared<const place::Vocabulary>(place::Vocabulary::load(
+      std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config" / place::kDefaultVocabularyFile));
   const auto closed = system::runSequence(io::TumDataset::open(dir.path() / "lap"), options,
                                           dir.path() / "run", [](const system::FrameStats&) {});
   ASSERT_TRUE(closed.evaluation.has_value());
+  EXPECT_EQ(closed.loops.detector, "bow");
   EXPECT_GE(closed.loops.loops_accepted, 1);
   EXPECT_LT(closed.evaluation->ate.statistics.rmse, 0.9 * kAteWithoutLoopClosing);
   ASSERT_EQ(closed.loop_checks.size(), closed.loops.loops.size());

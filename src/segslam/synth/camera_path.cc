@@ -93,13 +93,16 @@ geometry::Pose roomLoopPose(double tau) {
 std::vector<geometry::Pose> cameraTrajectory(const SynthOptions& options) {
   std::vector<geometry::Pose> poses;
   poses.reserve(options.frames);
-  const int lap = std::max(options.frames - 1, 1);
+  const int span = std::max(options.frames - 1, 1);
   for (int k = 0; k < options.frames; ++k) {
+    // Position on the circuit in laps, wrapped to [0, 1): the last frame is the first pose
+    // again, exactly.
+    const long long progress = static_cast<long long>(k) * options.laps;
+    const double tau = static_cast<double>(progress % span) / span;
     if (options.path == "loop") {
-      // The last frame is the first pose again, exactly.
-      poses.push_back(loopPose(static_cast<double>(k % lap) / lap));
+      poses.push_back(loopPose(tau));
     } else if (options.path == "room") {
-      poses.push_back(roomLoopPose(static_cast<double>(k % lap) / lap));
+      poses.push_back(roomLoopPose(tau));
     } else if (options.path == "xyz") {
       poses.push_back(xyzPose(k / kSynthFps));
     } else {

@@ -81,6 +81,15 @@ TEST(SynthCameraPath, RoomLoopTurnsOnceAndEndsAtItsStart) {
   EXPECT_GT(geometry::rotationAngle(half), 170.0 * std::numbers::pi / 180);
 }
 
+TEST(SynthCameraPath, RoomLapsRepeatTheCircuit) {
+  SynthOptions options = pathOptions("room", 1201);
+  options.laps = 2;
+  const auto poses = cameraTrajectory(options);
+  for (int k : {0, 600, 1200}) EXPECT_TRUE(poses[k].isApprox(poses.front(), 1e-9)) << k;
+  EXPECT_TRUE(poses[100].isApprox(poses[700], 1e-9));
+  expectHandheldAndInside(poses);
+}
+
 TEST(SynthCameraPath, StaticNeverMoves) {
   const auto poses = cameraTrajectory(pathOptions("static", 50));
   for (const auto& pose : poses) EXPECT_TRUE(pose.isApprox(poses.front(), 0.0));

@@ -55,11 +55,17 @@ fmt::ostream openText(const std::filesystem::path& file) {
 }
 
 nlohmann::json optionsJson(const SynthOptions& options) {
-  return {{"frames", options.frames},           {"width", options.width},
-          {"height", options.height},           {"path", options.path},
-          {"people", options.people},           {"person_speed", options.person_speed},
-          {"person_size", options.person_size}, {"moved_furniture", options.moved_furniture},
-          {"depth_noise", options.depth_noise}, {"seed", options.seed}};
+  return {{"frames", options.frames},
+          {"width", options.width},
+          {"height", options.height},
+          {"path", options.path},
+          {"laps", options.laps},
+          {"people", options.people},
+          {"person_speed", options.person_speed},
+          {"person_size", options.person_size},
+          {"moved_furniture", options.moved_furniture},
+          {"depth_noise", options.depth_noise},
+          {"seed", options.seed}};
 }
 
 nlohmann::json cameraJson(const core::Camera& camera) {

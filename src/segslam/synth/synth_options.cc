@@ -47,9 +47,11 @@ void validateOptions(const SynthOptions& options) {
   requireInRange("--people", options.people, 0, kSynthMaxPeople);
   requireInRange("--person-speed", options.person_speed, 0.0, kSynthMaxPersonSpeed);
   requireInRange("--person-size", options.person_size, kSynthMinPersonSize, kSynthMaxPersonSize);
-  if ((options.path == "loop" || options.path == "room") && options.frames < kSynthMinLoopFrames) {
-    fail(fmt::format("--path {} needs at least {} frames (one lap at handheld speed), got {}",
-                     options.path, kSynthMinLoopFrames, options.frames));
+  requireInRange("--laps", options.laps, 1, kSynthMaxLaps);
+  const int min_frames = kSynthMinLoopFrames * options.laps;
+  if ((options.path == "loop" || options.path == "room") && options.frames < min_frames) {
+    fail(fmt::format("--path {} needs at least {} frames ({} per lap at handheld speed), got {}",
+                     options.path, min_frames, kSynthMinLoopFrames, options.frames));
   }
 }
 

@@ -19,6 +19,9 @@ struct SynthOptions {
   // "room" (a lap around the room's centre turning once all the way round, ending at its start
   // pose: the start's view comes back only at the end) or "static" (the camera does not move).
   std::string path = "xyz";
+  // "loop" and "room": times round the same circuit; every lap but the first revisits what the
+  // earlier ones mapped, so drift meets the loop early and the map is reused for a whole lap.
+  int laps = 1;
   int people = 2;                // 0 = no people
   double person_speed = 1.0;     // walking speed in m/s; 0 = people stand still
   double person_size = 1.0;      // scale of a 1.75 m tall person
@@ -42,7 +45,8 @@ inline constexpr int kSynthMaxWidth = 4096;
 inline constexpr int kSynthMaxHeight = 4096;
 inline constexpr int kSynthMaxFrames = 100000;
 // The loop is one lap of fixed size; fewer frames would make the camera faster than a handheld one.
-inline constexpr int kSynthMinLoopFrames = 240;
+inline constexpr int kSynthMinLoopFrames = 240;  // per lap
+inline constexpr int kSynthMaxLaps = 10;
 
 std::vector<std::string> cameraPathNames();
 std::vector<std::string> depthNoiseNames();

@@ -74,6 +74,14 @@ TEST(SynthOptions, RejectsImpossibleOptionsWithOneLineNamingTheOption) {
         o.frames = kSynthMinLoopFrames - 1;
       },
       "--path loop");
+  expectRejected([](SynthOptions& o) { o.laps = 0; }, "--laps");
+  expectRejected(
+      [](SynthOptions& o) {
+        o.path = "room";
+        o.laps = 2;
+        o.frames = 2 * kSynthMinLoopFrames - 1;
+      },
+      "--path room");
 }
 
 TEST(SynthOptions, AcceptsTheEdgesOfTheRanges) {

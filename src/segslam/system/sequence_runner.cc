@@ -219,7 +219,8 @@ nlohmann::json loopClosingJson(const SequenceRunSummary& summary) {
     }
     loops.push_back(entry);
   }
-  return {{"candidates_verified", stats.consistent_candidates},
+  return {{"detector", stats.detector},
+          {"candidates_verified", stats.consistent_candidates},
           {"loops_accepted", stats.loops_accepted},
           {"global_bas_completed", stats.global_bas_completed},
           {"global_bas_cancelled", stats.global_bas_cancelled},

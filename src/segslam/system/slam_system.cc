@@ -30,6 +30,13 @@ feature::OrbExtractorOptions extractorOptions(feature::OrbExtractorOptions optio
   return options;
 }
 
+std::unique_ptr<loop::LoopCandidateDetector> loopCandidateDetector(const SlamOptions& options) {
+  if (options.loop_vocabulary) {
+    return std::make_unique<loop::BowLoopDetector>(options.loop_vocabulary, options.loop_bow);
+  }
+  return std::make_unique<loop::DescriptorVoteDetector>(options.loop_detector);
+}
+
 }  // namespace
 
 SlamSystem::SlamSystem(const core::Camera& camera, SlamOptions options)
@@ -42,8 +49,7 @@ SlamSystem::SlamSystem(const core::Camera& camera, SlamOptions options)
       tracker_(map_, mapper_, options.tracker) {
   if (options_.loop_closing) {
     loop_closer_ = std::make_unique<loop::LoopCloser>(
-        map_, mapper_, std::make_unique<loop::DescriptorVoteDetector>(options_.loop_detector),
-        options_.loop);
+        map_, mapper_, loopCandidateDetector(options_), options_.loop);
     mapper_.setProcessedKeyFrameObserver([this](std::shared_ptr<map::KeyFrame> keyframe) {
       loop_closer_->insertKeyFrame(keyframe);
     });

@@ -8,6 +8,7 @@
 #include "segslam/core/camera.h"
 #include "segslam/core/trajectory.h"
 #include "segslam/feature/orb_extractor.h"
+#include "segslam/loop/bow_loop_detector.h"
 #include "segslam/loop/descriptor_vote_detector.h"
 #include "segslam/loop/loop_closer.h"
 #include "segslam/map/map.h"
@@ -20,10 +21,13 @@ struct SlamOptions {
   feature::OrbExtractorOptions orb;
   tracking::TrackerOptions tracker;
   mapping::LocalMapperOptions mapper;
-  // Loop closing on its own thread (inline in deterministic mode); candidates from
-  // loop::DescriptorVoteDetector.
+  // Loop closing on its own thread (inline in deterministic mode). Candidates by bag of words
+  // with the union mask (loop::BowLoopDetector) when a vocabulary is given, else by
+  // loop::DescriptorVoteDetector, which needs none.
   bool loop_closing = true;
   loop::LoopClosingOptions loop;
+  std::shared_ptr<const place::Vocabulary> loop_vocabulary;
+  loop::BowLoopOptions loop_bow;
   loop::DescriptorVoteOptions loop_detector;
   // Virtual stereo baseline times fx (ORB-SLAM2's TUM setting) and the depth, in baselines,
   // below which a keypoint's depth is trusted to create points (40 baselines ~ 3 m).

@@ -1,0 +1,148 @@
+#include "segslam/loop/bow_loop_detector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+
+namespace segslam::loop {
+
+namespace {
+
+bool liesOnMask(const cv::Mat& mask, const cv::Point2f& pixel) {
+  if (mask.empty()) return false;
+  const int x = static_cast<int>(pixel.x);
+  const int y = static_cast<int>(pixel.y);
+  if (x < 0 || y < 0 || x >= mask.cols || y >= mask.rows) return false;
+  return mask.at<std::uint8_t>(y, x) != 0;
+}
+
+struct CandidateGroup {
+  double score = 0.0;
+  std::uint64_t best_keyframe = 0;
+};
+
+}  // namespace
+
+BowLoopDetector::BowLoopDetector(std::shared_ptr<const place::Vocabulary> vocabulary,
+                                 BowLoopOptions options)
+    : vocabulary_(std::move(vocabulary)), options_(options) {
+  if (!vocabulary_) throw std::invalid_argument("BowLoopDetector: no vocabulary");
+}
+
+BowLoopDetector::Entry BowLoopDetector::entryOf(const map::KeyFrame& keyframe) const {
+  Entry entry;
+  entry.keyframe = &keyframe;
+  // A mask without a dynamic pixel changes no score and would cost a full image per keyframe.
+  if (!keyframe.dynamic_mask.empty() && cv::countNonZero(keyframe.dynamic_mask) > 0) {
+    entry.dynamic_mask = keyframe.dynamic_mask;
+  }
+  for (std::size_t i = 0; i < keyframe.keypoints.size(); ++i) {
+    const cv::Point2f& pixel = keyframe.keypoints[i].pt;
+    if (liesOnMask(entry.dynamic_mask, pixel)) continue;
+    entry.words.push_back(
+        vocabulary_->wordOf(keyframe.descriptors.ptr<std::uint8_t>(static_cast<int>(i))));
+    entry.pixels.push_back(pixel);
+  }
+  std::vector<std::size_t> all(entry.words.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+  entry.bow = wordsOf(entry, all);
+  return entry;
+}
+
+place::BowVector BowLoopDetector::wordsOf(const Entry& entry,
+                                          const std::vector<std::size_t>& kept) const {
+  // Term frequency times IDF, as Vocabulary::transform weighs them.
+  place::BowVector bow;
+  for (const std::size_t k : kept) {
+    const float idf = vocabulary_->idf(entry.words[k]);
+    if (idf > 0.0F) bow[entry.words[k]] += idf;
+  }
+  place::normaliseL1(bow);
+  return bow;
+}
+
+std::vector<std::size_t> BowLoopDetector::keypointsStaticIn(const Entry& a, const Entry& b) {
+  std::vector<std::size_t> kept;
+  kept.reserve(a.pixels.size());
+  for (std::size_t k = 0; k < a.pixels.size(); ++k) {
+    if (!liesOnMask(b.dynamic_mask, a.pixels[k])) kept.push_back(k);
+  }
+  return kept;
+}
+
+double BowLoopDetector::unionMaskScore(const Entry& a, const Entry& b) const {
+  if (a.dynamic_mask.empty() && b.dynamic_mask.empty()) return place::l1Score(a.bow, b.bow);
+  return place::l1Score(wordsOf(a, keypointsStaticIn(a, b)), wordsOf(b, keypointsStaticIn(b, a)));
+}
+
+const BowLoopDetector::Entry* BowLoopDetector::find(std::uint64_t keyframe_id) const {
+  const auto it = entry_of_keyframe_.find(keyframe_id);
+  return it == entry_of_keyframe_.end() ? nullptr : &entries_[it->second];
+}
+
+void BowLoopDetector::add(const map::KeyFrame& keyframe) {
+  Entry entry = entryOf(keyframe);
+  const auto id = database_.add(entry.bow);
+  entry_of_keyframe_[keyframe.id] = id;
+  entries_.push_back(std::move(entry));
+}
+
+std::vector<std::uint64_t> BowLoopDetector::candidates(const map::KeyFrame& query,
+                                                       const std::set<std::uint64_t>& covisible,
+                                                       std::size_t max_candidates) const {
+  const Entry query_entry = entryOf(query);
+  double threshold = std::numeric_limits<double>::infinity();
+  for (const std::uint64_t id : covisible) {
+    const Entry* neighbour = id == query.id ? nullptr : find(id);
+    if (neighbour) threshold = std::min(threshold, unionMaskScore(query_entry, *neighbour));
+  }
+  if (!std::isfinite(threshold)) threshold = 0.0;
+  threshold = std::max(threshold, options_.min_score);
+
+  const auto hits = database_.query(query_entry.bow, options_.shortlist, [&](auto entry) {
+    const map::KeyFrame* keyframe = entries_[entry].keyframe;
+    return keyframe->bad || keyframe->id == query.id || covisible.contains(keyframe->id);
+  });
+  std::unordered_map<std::uint64_t, double> scores;
+  for (const auto& hit : hits) {
+    const Entry& entry = entries_[hit.entry];
+    const double score = unionMaskScore(query_entry, entry);
+    if (score > threshold) scores[entry.keyframe->id] = score;
+  }
+
+  std::vector<CandidateGroup> groups;
+  for (const auto& [id, score] : scores) {
+    CandidateGroup group{score, id};
+    double best = score;
+    for (const map::KeyFrame* neighbour :
+         find(id)->keyframe->bestCovisibles(options_.group_neighbours)) {
+      const auto it = scores.find(neighbour->id);
+      if (it == scores.end()) continue;
+      group.score += it->second;
+      if (it->second > best) {
+        best = it->second;
+        group.best_keyframe = neighbour->id;
+      }
+    }
+    groups.push_back(group);
+  }
+  std::sort(groups.begin(), groups.end(), [](const CandidateGroup& a, const CandidateGroup& b) {
+    return a.score != b.score ? a.score > b.score : a.best_keyframe < b.best_keyframe;
+  });
+  std::vector<std::uint64_t> result;
+  for (const CandidateGroup& group : groups) {
+    if (result.size() >= max_candidates ||
+        group.score < options_.min_relative_group_score * groups.front().score) {
+      break;
+    }
+    if (std::find(result.begin(), result.end(), group.best_keyframe) == result.end()) {
+      result.push_back(group.best_keyframe);
+    }
+  }
+  return result;
+}
+
+}  // namespace segslam::loop
