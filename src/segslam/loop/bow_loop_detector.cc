@@ -19,7 +19,7 @@ bool liesOnMask(const cv::Mat& mask, const cv::Point2f& pixel) {
   return mask.at<std::uint8_t>(y, x) != 0;
 }
 
-struct CandidateGroup {
+struct ScoredGroup {
   double score = 0.0;
   std::uint64_t best_keyframe = 0;
 };
@@ -113,9 +113,9 @@ std::vector<std::uint64_t> BowLoopDetector::candidates(const map::KeyFrame& quer
     if (score > threshold) scores[entry.keyframe->id] = score;
   }
 
-  std::vector<CandidateGroup> groups;
+  std::vector<ScoredGroup> groups;
   for (const auto& [id, score] : scores) {
-    CandidateGroup group{score, id};
+    ScoredGroup group{score, id};
     double best = score;
     for (const map::KeyFrame* neighbour :
          find(id)->keyframe->bestCovisibles(options_.group_neighbours)) {
@@ -129,11 +129,11 @@ std::vector<std::uint64_t> BowLoopDetector::candidates(const map::KeyFrame& quer
     }
     groups.push_back(group);
   }
-  std::sort(groups.begin(), groups.end(), [](const CandidateGroup& a, const CandidateGroup& b) {
+  std::sort(groups.begin(), groups.end(), [](const ScoredGroup& a, const ScoredGroup& b) {
     return a.score != b.score ? a.score > b.score : a.best_keyframe < b.best_keyframe;
   });
   std::vector<std::uint64_t> result;
-  for (const CandidateGroup& group : groups) {
+  for (const ScoredGroup& group : groups) {
     if (result.size() >= max_candidates ||
         group.score < options_.min_relative_group_score * groups.front().score) {
       break;
