@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "segslam/place/vocabulary.h"
 #include "segslam/place/vocabulary_trainer.h"
+#include "segslam/util/error.h"
 #include "segslam/util/progress.h"
 
 namespace segslam::apps {
@@ -59,7 +60,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 void runTrain(const VocabTrainArguments& args) {
   if (args.image_folders.empty() && args.datasets.empty()) {
-    throw CLI::ValidationError("vocab train", "give at least one --images or --dataset");
+    throw util::Error("vocab train: give at least one --images or --dataset");
   }
   const auto images = place::listTrainingImages(trainingSources(args), args.every);
   spdlog::info("vocab train: {} images; k {}, depth {}, seed {}", images.size(), args.vocabulary.k,

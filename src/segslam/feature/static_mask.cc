@@ -22,6 +22,14 @@ std::vector<int> discHalfWidths(int radius) {
 
 }  // namespace
 
+bool isDynamicAt(const cv::Mat& dynamic_mask, const cv::Point2f& pixel) {
+  if (dynamic_mask.empty()) return false;
+  const int x = cvRound(pixel.x);
+  const int y = cvRound(pixel.y);
+  return x >= 0 && y >= 0 && x < dynamic_mask.cols && y < dynamic_mask.rows &&
+         dynamic_mask.at<std::uint8_t>(y, x) != 0;
+}
+
 cv::Mat dilateDynamicMask(const cv::Mat& dynamic_mask, int radius) {
   if (dynamic_mask.empty()) return {};
   if (dynamic_mask.type() != CV_8UC1) {

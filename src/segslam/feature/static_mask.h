@@ -11,6 +11,10 @@ namespace segslam::feature {
 // frame when objects cover a small part of it, and the same result.
 cv::Mat dilateDynamicMask(const cv::Mat& dynamic_mask, int radius);
 
+// Whether the pixel nearest to `pixel` is dynamic (CV_8UC1 mask, non-zero = dynamic); false for
+// an empty mask and outside the image.
+bool isDynamicAt(const cv::Mat& dynamic_mask, const cv::Point2f& pixel);
+
 // Where keypoints may be extracted, in level-0 pixels: everywhere except within `radius` pixels
 // (Euclidean) of a dynamic pixel. The dilation keeps keypoints, and most of their descriptor
 // patches, off the border of a moving object, where segmentation is least reliable.

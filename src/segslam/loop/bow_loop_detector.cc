@@ -7,17 +7,11 @@
 #include <unordered_map>
 #include <utility>
 
+#include "segslam/feature/static_mask.h"
+
 namespace segslam::loop {
 
 namespace {
-
-bool liesOnMask(const cv::Mat& mask, const cv::Point2f& pixel) {
-  if (mask.empty()) return false;
-  const int x = static_cast<int>(pixel.x);
-  const int y = static_cast<int>(pixel.y);
-  if (x < 0 || y < 0 || x >= mask.cols || y >= mask.rows) return false;
-  return mask.at<std::uint8_t>(y, x) != 0;
-}
 
 struct ScoredGroup {
   double score = 0.0;
@@ -41,7 +35,7 @@ BowLoopDetector::Entry BowLoopDetector::entryOf(const map::KeyFrame& keyframe) c
   }
   for (std::size_t i = 0; i < keyframe.keypoints.size(); ++i) {
     const cv::Point2f& pixel = keyframe.keypoints[i].pt;
-    if (liesOnMask(entry.dynamic_mask, pixel)) continue;
+    if (feature::isDynamicAt(entry.dynamic_mask, pixel)) continue;
     entry.words.push_back(
         vocabulary_->wordOf(keyframe.descriptors.ptr<std::uint8_t>(static_cast<int>(i))));
     entry.pixels.push_back(pixel);
@@ -68,7 +62,7 @@ std::vector<std::size_t> BowLoopDetector::keypointsStaticIn(const Entry& a, cons
   std::vector<std::size_t> kept;
   kept.reserve(a.pixels.size());
   for (std::size_t k = 0; k < a.pixels.size(); ++k) {
-    if (!liesOnMask(b.dynamic_mask, a.pixels[k])) kept.push_back(k);
+    if (!feature::isDynamicAt(b.dynamic_mask, a.pixels[k])) kept.push_back(k);
   }
   return kept;
 }

@@ -4,20 +4,9 @@
 #include <numeric>
 
 #include "segslam/feature/descriptor_distance.h"
+#include "segslam/feature/static_mask.h"
 
 namespace segslam::loop {
-
-namespace {
-
-bool isDynamicAt(const cv::Mat& mask, const cv::Point2f& pixel) {
-  if (mask.empty()) return false;
-  const int x = static_cast<int>(pixel.x);
-  const int y = static_cast<int>(pixel.y);
-  if (x < 0 || y < 0 || x >= mask.cols || y >= mask.rows) return false;
-  return mask.at<std::uint8_t>(y, x) != 0;
-}
-
-}  // namespace
 
 DescriptorVoteDetector::DescriptorVoteDetector(DescriptorVoteOptions options) : options_(options) {}
 
@@ -46,14 +35,14 @@ DescriptorVoteDetector::Signature DescriptorVoteDetector::signatureOf(
 double DescriptorVoteDetector::score(const Signature& a, const Signature& b) const {
   std::vector<const std::uint8_t*> b_rows;
   for (int j = 0; j < b.descriptors.rows; ++j) {
-    if (!isDynamicAt(a.dynamic_mask, b.pixels[static_cast<std::size_t>(j)])) {
+    if (!feature::isDynamicAt(a.dynamic_mask, b.pixels[static_cast<std::size_t>(j)])) {
       b_rows.push_back(b.descriptors.ptr<std::uint8_t>(j));
     }
   }
   int voters = 0;
   int votes = 0;
   for (int i = 0; i < a.descriptors.rows; ++i) {
-    if (isDynamicAt(b.dynamic_mask, a.pixels[static_cast<std::size_t>(i)])) continue;
+    if (feature::isDynamicAt(b.dynamic_mask, a.pixels[static_cast<std::size_t>(i)])) continue;
     ++voters;
     const std::uint8_t* row = a.descriptors.ptr<std::uint8_t>(i);
     int best = 256;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "segslam/core/undistortion.h"
+#include "segslam/feature/static_mask.h"
 #include "segslam/util/error.h"
 
 namespace segslam::segmentation {
@@ -21,13 +22,6 @@ float depthAt(const cv::Mat& depth, const cv::Point2f& p) {
   const int y = cvRound(p.y);
   if (x < 0 || y < 0 || x >= depth.cols || y >= depth.rows) return 0.0f;
   return depth.at<float>(y, x);
-}
-
-bool isMarked(const cv::Mat& mask, const cv::Point2f& p) {
-  if (mask.empty()) return false;
-  const int x = cvRound(p.x);
-  const int y = cvRound(p.y);
-  return x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<std::uint8_t>(y, x) != 0;
 }
 
 // Lucas-Kanade tracks that do not come back to where they started (occlusion, blur, repeated
@@ -142,7 +136,7 @@ cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame
   tracks.previous_un = core::undistortPixels(tracks.previous_raw, camera_);
   tracks.current_un = core::undistortPixels(tracks.current_raw, camera_);
   for (const cv::Point2f& p : tracks.current_raw) {
-    tracks.known_dynamic.push_back(isMarked(known_dynamic, p));
+    tracks.known_dynamic.push_back(feature::isDynamicAt(known_dynamic, p));
   }
   tracks.previous_depth = previous.depth;
   tracks.current_depth = current.depth;
