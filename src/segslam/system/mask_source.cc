@@ -100,7 +100,8 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
   if (usesNetwork(source_)) {
     const auto config = segmentation::readModelConfig(options.model_config);
     semantic_ = std::make_unique<segmentation::MaskStream>(
-        semanticSegment(options, config), streamOptions(synchronous, options.network_interval, true));
+        semanticSegment(options, config),
+        streamOptions(synchronous, options.network_interval, true));
     semantic_classes_.emplace(config.classes);
   }
   if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
