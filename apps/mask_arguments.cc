@@ -32,6 +32,13 @@ void addMaskOptions(CLI::App& command, MaskArguments& arguments) {
                   "to the frames between); 1 scores the network alone")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
+  command
+      .add_option("--network-latency", arguments.network_latency,
+                  "With --deterministic: use each network output this many frames after its "
+                  "frame, as the network's own thread would deliver it (reproducible real-time "
+                  "behaviour)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 60));
 }
 
 system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments) {
@@ -40,6 +47,7 @@ system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments) {
   options.model_config = arguments.model_config;
   if (!arguments.model_file.empty()) options.model_file = arguments.model_file;
   options.network_interval = arguments.network_interval;
+  options.network_latency = arguments.network_latency;
   options.geometric.motion_model = segmentation::cameraMotionModelFromName(arguments.camera_motion);
   return options;
 }

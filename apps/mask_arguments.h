@@ -14,6 +14,7 @@ struct MaskArguments {
   std::filesystem::path model_config;
   std::string camera_motion = "rigid";
   int network_interval = 5;
+  int network_latency = 0;
 };
 
 // Adds --seg, --model-config, --model, --camera-motion and --network-interval to `command`.

@@ -59,7 +59,8 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
   if (s.network_runs > 0) {
     const std::string where =
         options.run.slam.deterministic
-            ? fmt::format("inline, every {} frames", options.masks.network_interval)
+            ? fmt::format("inline, every {} frames, used {} frames later",
+                          options.masks.network_interval, options.masks.network_latency)
             : "own thread";
     fmt::print("  network    ran on {} of {} frames, {:.0f} ms each ({})\n", s.network_runs,
                s.frames, s.network_mean_ms, where);
@@ -129,6 +130,11 @@ void registerRunCommand(CLI::App& app) {
   addMaskOptions(*run, options->masks);
   run->add_option("--mask-dilation", options->run.slam.mask_dilation_px,
                   "Dilation of the dynamic mask before feature extraction (pixels)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  run->add_option("--cull-seen-through", options->run.slam.tracker.seen_through_frames_to_cull,
+                  "Cull map points that this many frames' depth sees through: they were on "
+                  "something that moved away (0 = off)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   run->add_option("--features", options->run.slam.orb.num_features, "ORB features per frame")

@@ -81,7 +81,8 @@ Frame::Frame(std::uint64_t frame_id, double stamp, std::vector<cv::KeyPoint> raw
       camera(std::move(frame_camera)),
       keypoints(std::move(raw_keypoints)),
       descriptors(std::move(frame_descriptors)),
-      dynamic_mask(std::move(mask)) {
+      dynamic_mask(std::move(mask)),
+      depth_image(depth_m) {
   std::vector<cv::Point2f> points;
   points.reserve(keypoints.size());
   for (const auto& kp : keypoints) points.push_back(kp.pt);

@@ -79,6 +79,7 @@ class Frame {
   std::vector<float> right_u;              // virtual right column, < 0: none
   cv::Mat descriptors;                     // N x 32, CV_8U
   cv::Mat dynamic_mask;
+  cv::Mat depth_image;  // CV_32F metres, shared with the caller (not copied)
   KeypointGrid grid;
 
   std::vector<std::shared_ptr<MapPoint>> map_points;  // match per keypoint, may be null

@@ -62,6 +62,8 @@ class MapPoint {
   // Tracking bookkeeping: which frame last looked for / found this point.
   std::uint64_t last_seen_frame = UINT64_MAX;
   std::uint64_t track_reference_frame = UINT64_MAX;
+  // Frames whose depth saw through the point (tracking::pointsSeenThrough).
+  int seen_through = 0;
 
  private:
   std::map<KeyFrame*, std::size_t, KeyFrameIdLess> observations_;

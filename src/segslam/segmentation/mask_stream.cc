@@ -66,7 +66,7 @@ MaskStream::Result MaskStream::run(const SegmentationJob& job) {
   if (masks.dynamic.empty()) masks.dynamic = cv::Mat::zeros(job.current.bgr.size(), CV_8UC1);
   if (masks.labels.empty()) masks.labels = masks.dynamic.clone();
   std::vector<float> depths = objectDepths(masks.dynamic, job.current.depth, options_.refinement);
-  return {job.current.id, std::move(masks), std::move(depths)};
+  return {job.current.id, std::move(masks), std::move(depths), job.current.depth};
 }
 
 void MaskStream::submit(SegmentationJob job) {
@@ -84,9 +84,7 @@ SemanticMasks MaskStream::masksFor(std::uint64_t frame_id, const cv::Mat& bgr, c
   propagator_.addFrame(frame_id, bgr);
   SegmentationJob job{previous_, StreamFrame{frame_id, bgr, depth}, known_dynamic};
   if (options_.synchronous) {
-    if (!latest_ || frame_id - latest_->frame_id >= static_cast<std::uint64_t>(options_.interval)) {
-      latest_ = run(job);
-    }
+    segmentSynchronously(job);
   } else {
     submit(job);
     std::unique_lock lock(mutex_);
@@ -94,14 +92,46 @@ SemanticMasks MaskStream::masksFor(std::uint64_t frame_id, const cv::Mat& bgr, c
       changed_.wait(lock, [this] { return finished_.has_value(); });
     }
     if (finished_) {
-      latest_ = std::move(finished_);
+      Result result = std::move(*finished_);
       finished_.reset();
+      lock.unlock();
+      collect(std::move(result), frame_id);
     }
   }
   previous_ = job.current;
   SemanticMasks masks = carryLatest(frame_id, bgr.size());
   masks.dynamic = fitToObjects(masks.dynamic, depth, frame_id);
   return masks;
+}
+
+void MaskStream::segmentSynchronously(const SegmentationJob& job) {
+  const std::uint64_t frame_id = job.current.id;
+  if (!last_synchronous_run_ ||
+      frame_id - *last_synchronous_run_ >= static_cast<std::uint64_t>(options_.interval)) {
+    last_synchronous_run_ = frame_id;
+    Result result = run(job);
+    if (options_.latency_frames > 0) result.depth = result.depth.clone();
+    delayed_.push_back(std::move(result));
+  }
+  // The first output is used at once, as the threaded stream waits for it.
+  const auto latency = static_cast<std::uint64_t>(options_.latency_frames);
+  while (!delayed_.empty() && (!latest_ || delayed_.front().frame_id + latency <= frame_id)) {
+    collect(std::move(delayed_.front()), frame_id);
+    delayed_.pop_front();
+  }
+}
+
+void MaskStream::collect(Result result, std::uint64_t frame_id) {
+  if (result.frame_id < frame_id) {
+    late_ = LateOutput{result.frame_id, result.masks.dynamic, result.depth};
+  }
+  latest_ = std::move(result);
+}
+
+std::optional<LateOutput> MaskStream::takeLateOutput() {
+  std::optional<LateOutput> late = std::move(late_);
+  late_.reset();
+  return late;
 }
 
 SemanticMasks MaskStream::carryLatest(std::uint64_t frame_id, cv::Size size) {

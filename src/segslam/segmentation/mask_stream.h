@@ -2,6 +2,7 @@
 
 #include <condition_variable>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <mutex>
 #include <optional>
@@ -19,6 +20,9 @@ struct MaskStreamOptions {
   // segmenter runs on its own thread whenever it is free (newest frame wins).
   bool synchronous = false;
   int interval = 5;
+  // Synchronous mode: an output is used only this many frames after its own frame, as a
+  // segmenter on its own thread would deliver it; makes the real-time behaviour reproducible.
+  int latency_frames = 0;
   // Lowers the segmentation thread's scheduling priority (nice) so that it takes only the CPU
   // time tracking and mapping leave: a late mask is carried over, a late frame is lost.
   int thread_niceness = 10;
@@ -51,6 +55,14 @@ struct SegmentationJob {
 };
 using Segment = std::function<SemanticMasks(const SegmentationJob&)>;
 
+// An output that arrived after its frame had been handed on: the map can still be cleaned of
+// what it shows (tracking::pointsOnDynamicSurface).
+struct LateOutput {
+  std::uint64_t frame_id = 0;
+  cv::Mat dynamic;  // CV_8UC1, 255 = dynamic, as the segmenter gave it
+  cv::Mat depth;    // CV_32FC1 metres of that frame, or empty
+};
+
 // Masks for every frame without waiting for a slow segmenter (a 150-200 ms network, geometric
 // segmentation): the newest finished output is carried to the current frame by optical flow
 // (MaskPropagator) and snapped to the objects' depth outlines. The segmenter runs on its own
@@ -68,6 +80,9 @@ class MaskStream {
   SemanticMasks masksFor(std::uint64_t frame_id, const cv::Mat& bgr, const cv::Mat& depth,
                          const cv::Mat& known_dynamic = cv::Mat());
 
+  // The output collected by the last masksFor() when it belongs to an earlier frame; taken once.
+  [[nodiscard]] std::optional<LateOutput> takeLateOutput();
+
   // Segmenter runs finished so far and their mean time.
   [[nodiscard]] int runs() const;
   [[nodiscard]] double meanRunMilliseconds() const;
@@ -77,6 +92,7 @@ class MaskStream {
     std::uint64_t frame_id;
     SemanticMasks masks;
     std::vector<float> object_depths;  // of the dynamic objects, in the segmented frame
+    cv::Mat depth;                     // of the segmented frame
   };
 
   // The newest output moved to the previous frame: each frame moves it one step further, so the
@@ -90,6 +106,8 @@ class MaskStream {
   void work();
   [[nodiscard]] SemanticMasks carryLatest(std::uint64_t frame_id, cv::Size size);
   void submit(SegmentationJob job);
+  void segmentSynchronously(const SegmentationJob& job);
+  void collect(Result result, std::uint64_t frame_id);
   [[nodiscard]] Result run(const SegmentationJob& job);
   [[nodiscard]] cv::Mat fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,
                                      std::uint64_t frame_id) const;
@@ -100,6 +118,9 @@ class MaskStream {
   StreamFrame previous_;          // the caller's last frame
   std::optional<Result> latest_;  // newest output, on the caller's side
   std::optional<Carried> carried_;
+  std::optional<LateOutput> late_;
+  std::deque<Result> delayed_;  // synchronous outputs waiting for their latency
+  std::optional<std::uint64_t> last_synchronous_run_;
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;

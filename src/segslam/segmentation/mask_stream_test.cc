@@ -95,6 +95,37 @@ TEST(MaskStream, SynchronousSegmenterGetsEachFrameWithTheOneBefore) {
   EXPECT_EQ(record->previous_and_current, expected);
 }
 
+// Marks as many pixels of the first row as the frame's id plus one, so outputs tell their frame.
+Segment countingSegment() {
+  return [](const SegmentationJob& job) {
+    cv::Mat dynamic = cv::Mat::zeros(job.current.bgr.size(), CV_8UC1);
+    dynamic(cv::Rect(0, 0, static_cast<int>(job.current.id) + 1, 1)) = 255;
+    return SemanticMasks{dynamic, dynamic};
+  };
+}
+
+TEST(MaskStream, SynchronousLatencyDeliversOutputsLateAndReportsThem) {
+  MaskStreamOptions options;
+  options.synchronous = true;
+  options.interval = 4;
+  options.latency_frames = 2;
+  MaskStream stream(countingSegment(), options);
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  std::vector<std::uint64_t> late_frames;
+  for (std::uint64_t frame = 0; frame < 10; ++frame) {
+    static_cast<void>(stream.masksFor(frame, bgr, cv::Mat()));
+    if (auto late = stream.takeLateOutput()) {
+      EXPECT_EQ(late->frame_id + 2, frame);
+      EXPECT_EQ(cv::countNonZero(late->dynamic), static_cast<int>(late->frame_id) + 1);
+      late_frames.push_back(late->frame_id);
+    }
+    EXPECT_FALSE(stream.takeLateOutput().has_value()) << "taken once";
+  }
+  // Frame 0's output is used at once (the first frame waits); frame 8's is not due before 10.
+  EXPECT_EQ(late_frames, std::vector<std::uint64_t>{4});
+  EXPECT_EQ(stream.runs(), 3);
+}
+
 TEST(MaskStream, AsynchronousSegmenterSeesFramesInOrder) {
   auto record = std::make_shared<RecordedJobs>();
   MaskStream stream(recordingSegment(record));

@@ -79,11 +79,12 @@ segmentation::Segment geometricSegment(const core::Camera& camera,
 // Geometric segmentation compares consecutive frames, so it runs on every frame it can.
 constexpr int kGeometricInterval = 1;
 
-segmentation::MaskStreamOptions streamOptions(bool synchronous, int interval,
+segmentation::MaskStreamOptions streamOptions(bool synchronous, int interval, int latency,
                                               bool refine_fresh_masks) {
   segmentation::MaskStreamOptions options;
   options.synchronous = synchronous;
   options.interval = interval;
+  options.latency_frames = latency;
   options.refine_fresh_masks = refine_fresh_masks;
   return options;
 }
@@ -101,30 +102,32 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
     const auto config = segmentation::readModelConfig(options.model_config);
     semantic_ = std::make_unique<segmentation::MaskStream>(
         semanticSegment(options, config),
-        streamOptions(synchronous, options.network_interval, true));
+        streamOptions(synchronous, options.network_interval, options.network_latency, true));
     semantic_classes_.emplace(config.classes);
   }
   if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
     geometric_ = std::make_unique<segmentation::MaskStream>(
         geometricSegment(dataset.camera(), options.geometric),
-        streamOptions(synchronous, kGeometricInterval, false));
+        streamOptions(synchronous, kGeometricInterval, 0, false));
   }
 }
 
 FrameMasks FrameMaskSource::masks(const io::RgbdFrame& frame, std::size_t index) {
-  FrameMasks masks{cv::Mat(), frame.labels, frame.instances};
+  FrameMasks masks{cv::Mat(), frame.labels, frame.instances, {}};
   if (source_ == MaskSource::kOracle) {
     masks.dynamic = frame.mask;
     return masks;
   }
   if (semantic_) {
     const segmentation::SemanticMasks network = semantic_->masksFor(index, frame.rgb, frame.depth);
-    masks = {network.dynamic, semantic_classes_->apply(network.labels), cv::Mat()};
+    masks = {network.dynamic, semantic_classes_->apply(network.labels), cv::Mat(), {}};
+    if (auto late = semantic_->takeLateOutput()) masks.late.push_back(std::move(*late));
   }
   if (geometric_) {
     const cv::Mat moving =
         geometric_->masksFor(index, frame.rgb, frame.depth, masks.dynamic).dynamic;
     masks.dynamic = masks.dynamic.empty() ? moving : (masks.dynamic | moving);
+    if (auto late = geometric_->takeLateOutput()) masks.late.push_back(std::move(*late));
   }
   return masks;
 }

@@ -34,6 +34,9 @@ struct MaskSourceOptions {
   // In synchronous (deterministic) mode the network runs on every this many frames; 1 scores the
   // network alone, without masks carried between its runs.
   int network_interval = 5;
+  // In synchronous mode each network output is used this many frames after its frame, as on
+  // its own thread: reproducible runs of the real-time pipeline.
+  int network_latency = 0;
 };
 
 // One frame's masks and the labels its map points get.
@@ -41,6 +44,8 @@ struct FrameMasks {
   cv::Mat dynamic;    // CV_8UC1, 255 = dynamic; empty = none
   cv::Mat labels;     // CV_8UC1 core::SemanticClass ids; empty = unknown
   cv::Mat instances;  // CV_16UC1 instance ids, 0 = none; empty = none
+  // Segmenter outputs for earlier frames that arrived with this one.
+  std::vector<segmentation::LateOutput> late;
 };
 
 // Gives every frame of a sequence its dynamic mask (CV_8UC1, 255 = dynamic; empty = none) from

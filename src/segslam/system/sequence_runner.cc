@@ -147,6 +147,10 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       const auto mask_start = std::chrono::steady_clock::now();
       const FrameMasks frame_masks = masks.masks(frame, i);
       const double mask_ms = util::millisecondsSince(mask_start);
+      for (const auto& late : frame_masks.late) {
+        summary.points_culled_by_late_masks +=
+            slam.applyLateMask(late.frame_id, late.dynamic, late.depth);
+      }
       stats.push_back(
           slam.processFrame(frame.timestamp, frame.rgb, frame.depth, frame_masks.dynamic));
       stats.back().mask_ms = mask_ms;
@@ -245,6 +249,7 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
   if (summary.network_runs > 0) {
     json["network_runs"] = summary.network_runs;
     json["network_mean_ms"] = summary.network_mean_ms;
+    json["points_culled_by_late_masks"] = summary.points_culled_by_late_masks;
   }
   if (summary.map) json["map"] = toJson(*summary.map);
   if (summary.evaluation) {

@@ -49,6 +49,7 @@ struct SequenceRunSummary {
   long peak_rss_mb = 0;
   int network_runs = 0;  // semantic masks: frames the network actually ran on
   double network_mean_ms = 0.0;
+  int points_culled_by_late_masks = 0;
   std::optional<eval::TrajectoryEvaluation> evaluation;
   std::optional<MapSummary> map;
   bool loop_closing = false;

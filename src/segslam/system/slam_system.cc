@@ -93,6 +93,12 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
   return stats;
 }
 
+int SlamSystem::applyLateMask(std::uint64_t frame_id, const cv::Mat& dynamic_mask,
+                              const cv::Mat& depth_m) {
+  std::lock_guard lock(map_.mutex);
+  return tracker_.cullPointsOnLateMask(frame_id, dynamic_mask, depth_m);
+}
+
 void SlamSystem::finish() {
   mapper_.finish();
   mapper_.processQueued();

@@ -65,6 +65,9 @@ class SlamSystem {
   // bgr: CV_8UC3. depth_m: CV_32F metres. dynamic_mask: empty or CV_8U, non-zero = dynamic.
   FrameStats processFrame(double timestamp, const cv::Mat& bgr, const cv::Mat& depth_m,
                           const cv::Mat& dynamic_mask);
+  // A dynamic mask for an earlier frame (frame_id as processFrame numbered it), arrived late:
+  // map points on what it marks are culled. Returns how many.
+  int applyLateMask(std::uint64_t frame_id, const cv::Mat& dynamic_mask, const cv::Mat& depth_m);
   // Waits for local mapping to finish its queue; call before reading the trajectories.
   void finish();
 

@@ -68,6 +68,8 @@ TrackingResult Tracker::track(map::Frame frame) {
   if (ok) {
     state_ = TrackingState::kOk;
     velocity_ = geometry::orthonormalised(current_.T_cw * last_.T_cw.inverse());
+    cullPointsSeenThrough();
+    rememberPose();
     if (needNewKeyFrame()) {
       createKeyFrame();
       result.new_keyframe = true;
@@ -278,6 +280,32 @@ int Tracker::searchLocalMap() {
   return searchLocalPoints(
       current_, projections,
       recently_relocalised ? kLocalMapRadiusAfterRelocalisation : kLocalMapRadius);
+}
+
+void Tracker::rememberPose() {
+  recent_poses_.emplace_back(current_.id, current_.T_cw);
+  while (recent_poses_.size() > static_cast<std::size_t>(options_.late_mask_max_age)) {
+    recent_poses_.pop_front();
+  }
+}
+
+int Tracker::cullPointsOnLateMask(std::uint64_t frame_id, const cv::Mat& dynamic_mask,
+                                  const cv::Mat& depth_m) {
+  const auto pose = std::find_if(recent_poses_.begin(), recent_poses_.end(),
+                                 [&](const auto& entry) { return entry.first == frame_id; });
+  if (pose == recent_poses_.end()) return 0;
+  const auto on_surface =
+      pointsOnDynamicSurface(local_points_, pose->second, current_.camera->camera, dynamic_mask,
+                             depth_m, options_.late_mask);
+  for (const auto& point : on_surface) point->setBad();
+  return static_cast<int>(on_surface.size());
+}
+
+void Tracker::cullPointsSeenThrough() {
+  if (options_.seen_through_frames_to_cull <= 0) return;
+  for (const auto& point : pointsSeenThrough(local_points_, current_, options_.free_space)) {
+    if (++point->seen_through >= options_.seen_through_frames_to_cull) point->setBad();
+  }
 }
 
 bool Tracker::needNewKeyFrame() const {

@@ -1,13 +1,16 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "segslam/map/frame.h"
 #include "segslam/map/map.h"
+#include "segslam/tracking/free_space_check.h"
 #include "segslam/tracking/keyframe_sink.h"
+#include "segslam/tracking/late_mask_check.h"
 
 namespace segslam::tracking {
 
@@ -21,6 +24,13 @@ struct TrackerOptions {
   int max_local_keyframes = 80;
   int min_inliers = 30;
   int min_inliers_after_relocalisation = 50;
+  // Map points that this many tracked frames' depth sees through are culled: they were on
+  // something that has moved away (a person missed by a late mask). 0 = never.
+  int seen_through_frames_to_cull = 2;
+  FreeSpaceOptions free_space;
+  // Late masks of frames up to this many frames old are applied to the map (0 = never).
+  int late_mask_max_age = 60;
+  DynamicSurfaceOptions late_mask;
 };
 
 enum class TrackingState { kNotInitialised, kOk, kLost };
@@ -40,6 +50,12 @@ class Tracker {
   Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options = {});
 
   TrackingResult track(map::Frame frame);
+
+  // Culls the local map points that lie on what a late dynamic mask of an earlier frame marks
+  // (tracking::pointsOnDynamicSurface). Frames older than the last few are ignored. Returns the
+  // number of points culled.
+  int cullPointsOnLateMask(std::uint64_t frame_id, const cv::Mat& dynamic_mask,
+                           const cv::Mat& depth_m);
 
   [[nodiscard]] TrackingState state() const { return state_; }
   [[nodiscard]] const map::Frame& currentFrame() const { return current_; }
@@ -68,6 +84,8 @@ class Tracker {
   void createKeyFrame();
   void addNewMapPoints(map::KeyFrame& keyframe);
   void dropTemporaryPoints();
+  void cullPointsSeenThrough();
+  void rememberPose();
   void recordPose();
   void reanchorLastFrame();
 
@@ -87,6 +105,8 @@ class Tracker {
   std::vector<std::shared_ptr<map::MapPoint>> temporary_points_;
   int inliers_ = 0;
   std::vector<FramePoseRecord> records_;
+  // Poses of the last tracked frames, for late masks.
+  std::deque<std::pair<std::uint64_t, geometry::Pose>> recent_poses_;
   std::uint64_t seen_corrections_ = 0;
 };
 
