@@ -79,6 +79,9 @@ class Frame {
   std::vector<float> right_u;              // virtual right column, < 0: none
   cv::Mat descriptors;                     // N x 32, CV_8U
   cv::Mat dynamic_mask;
+  // The colour image (CV_8UC3), set only when a keyframe made from this frame needs it later (the
+  // CNN loop detector); shared, not copied.
+  cv::Mat image;
   KeypointGrid grid;
 
   std::vector<std::shared_ptr<MapPoint>> map_points;  // match per keypoint, may be null
