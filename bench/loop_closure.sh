@@ -112,18 +112,18 @@ def change(on, off):
 lines = ["# Loop closure", "",
          "`bench/loop_closure.sh`: `segslam run --deterministic --no-map`, loop closing off, on with",
          "bag-of-words candidates and the union mask (`bow`, the default), with the descriptor vote",
-         "(`vote`) and with the CNN descriptor and the union mask (`cnn`: tiny_darknet pool3, masked",
+         "(`vote`) and with the CNN descriptor and the union mask (`cnn`: tiny_darknet pool2, masked",
          "average pooling). A loop is false when its verified relative pose is more than 0.1 m or",
          "5 degrees from the ground truth's. Loops: accepted / false, with the worst translation",
          f"error and the query keyframes. Load while measuring: `{load}`.", "",
          "| sequence | keyframes | ATE off (m) | " +
          " | ".join(f"ATE {m} (m) | change | loops {m}" for m in modes) + " |",
          "| --- | --- | --- | " + " | ".join("--- | --- | ---" for _ in modes) + " |"]
-for name, modes in by_name.items():
-    off = modes["off"]
+for name, runs in by_name.items():
+    off = runs["off"]
     cells = [name, str(off.get("keyframes", "-")), f"{off.get('ate_rmse_m', float('nan')):.4f}"]
     for mode in modes:
-        run = modes[mode]
+        run = runs[mode]
         loops, false_loops, worst = loop_figures(run)
         queries = ",".join(str(l["query_keyframe"]) for l in loops)
         worst_text = f", worst {worst:.3f} m" if worst is not None else ""
