@@ -2,12 +2,14 @@
 #include <spdlog/spdlog.h>
 
 #include <limits>
+#include <optional>
 
 #include "commands.h"
 #include "dataset_arguments.h"
 #include "mask_arguments.h"
 #include "segslam/io/camera_config.h"
 #include "segslam/io/tum_dataset.h"
+#include "segslam/place/cnn_backbone_config.h"
 #include "segslam/place/vocabulary.h"
 #include "segslam/system/sequence_runner.h"
 #include "segslam/util/logging.h"
@@ -30,7 +32,20 @@ struct RunOptions : DatasetArguments {
   system::SequenceRunOptions run;
   std::string loop_detector = "bow";
   std::filesystem::path vocabulary = defaultVocabularyFile();
+  std::filesystem::path backbone_config =
+      std::filesystem::path(SEGSLAM_CONFIG_DIR) / "models" / "tiny_darknet_imagenet.yaml";
+  std::optional<std::filesystem::path> backbone_model;
 };
+
+void loadLoopBackbone(RunOptions& options) {
+  if (!options.run.slam.loop_closing || options.loop_detector != "cnn") return;
+  loop::CnnLoopBackbone backbone;
+  backbone.config = place::readCnnBackboneConfig(options.backbone_config);
+  backbone.config_file = options.backbone_config;
+  backbone.model_file = place::resolveBackboneModelFile(backbone.config, options.backbone_config,
+                                                        options.backbone_model);
+  options.run.slam.loop_backbone = std::move(backbone);
+}
 
 // Only the shipped vocabulary may be missing (a checkout without config/): loop closing then
 // falls back to the descriptor vote. A vocabulary the user names must load.
@@ -81,6 +96,10 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
                  kFalseLoopTranslationM, kFalseLoopRotationDeg, false_loops);
     }
     fmt::print(", {} global BA\n", s.loops.global_bas_completed);
+    if (s.loops.detector == "cnn" && s.loops.keyframes_described > 0) {
+      fmt::print("  loop CNN   {:.1f} ms per keyframe on the loop-closing thread (wall)\n",
+                 s.loops.describe_ms_total / s.loops.keyframes_described);
+    }
   }
   if (s.evaluation) {
     const auto& ate = s.evaluation->ate.statistics;
@@ -107,6 +126,7 @@ void runCommand(RunOptions& options) {
   const auto dataset = openDataset(options);
   options.run.masks = maskSourceOptions(options.masks);
   loadLoopVocabulary(options);
+  loadLoopBackbone(options);
 
   std::filesystem::create_directories(options.out_dir);
   util::addLogFile(options.out_dir / "run.log");
@@ -155,9 +175,20 @@ void registerRunCommand(CLI::App& app) {
                   "Keyframes made after a loop correction before the next loop is sought")
       ->capture_default_str();
   run->add_option("--loop-detector", options->loop_detector,
-                  "Loop candidates: bow (bag of words with the union mask, needs the vocabulary) "
-                  "or vote (descriptor vote, no vocabulary)")
-      ->check(CLI::IsMember({"bow", "vote"}))
+                  "Loop candidates: bow (bag of words with the union mask, needs the vocabulary), "
+                  "vote (descriptor vote, no vocabulary) or cnn (CNN descriptor with the union "
+                  "mask, needs the backbone)")
+      ->check(CLI::IsMember({"bow", "vote", "cnn"}))
+      ->capture_default_str();
+  run->add_option("--backbone-config", options->backbone_config,
+                  "CNN backbone description (YAML) of the cnn loop detector")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  run->add_option("--backbone-model", options->backbone_model,
+                  "CNN backbone file (ONNX) overriding the config's; else the config's path or "
+                  "$SEGSLAM_MODEL_DIR");
+  run->add_option("--cnn-layer", options->run.slam.loop_cnn.layer,
+                  "Layer of the backbone config compared by the cnn loop detector")
       ->capture_default_str();
   run->add_option("--vocabulary", options->vocabulary,
                   "Bag-of-words vocabulary of the bow loop detector (segslam vocab train)")

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Loop closure: ATE with loop closing off and on (bag-of-words candidates with the union mask, the
-# default, and the descriptor vote), loops accepted and whether each agrees with the ground truth,
-# on drifting synthetic room laps and on the sequences the issue names. Writes
-# bench/results/loop_closure.md and bench/results/loop_closure.json.
+# default, the descriptor vote, and the CNN descriptor with the union mask), loops accepted and
+# whether each agrees with the ground truth, on drifting synthetic room laps and on the sequences
+# the issue names. Writes bench/results/loop_closure.md and bench/results/loop_closure.json.
 #
-#   bench/loop_closure.sh [--build DIR] [--out DIR] [--reuse]
+#   bench/loop_closure.sh [--build DIR] [--out DIR] [--reuse] [--modes "off bow vote cnn"]
 #
-# --reuse keeps the runs of an earlier call that finished (their summary.json exists).
+# --reuse keeps the runs of an earlier call that finished (their summary.json exists). --modes
+# picks the loop detectors compared ("off" is always run: the changes are relative to it); cnn
+# needs ../shared/models/tiny_darknet_imagenet.onnx.
 #
 # Runs `segslam run --deterministic --no-map` (reproducible figures). A loop whose verified
 # relative pose is more than 0.1 m or 5 degrees from the ground truth's counts as false.
@@ -16,11 +18,13 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$root/build"
 out="$root/out/bench_loop"
 reuse=false
+modes="off bow vote cnn"
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --build) build="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --reuse) reuse=true; shift ;;
+    --modes) modes="off ${2//off/}"; shift 2 ;;
     *) echo "loop_closure.sh: unknown option '$1'" >&2; exit 2 ;;
   esac
 done
@@ -63,7 +67,7 @@ results="$out/summaries.jsonl"
 : > "$results"
 for configuration in "${configurations[@]}"; do
   IFS='|' read -r name dataset extra <<< "$configuration"
-  for mode in off bow vote; do
+  for mode in $modes; do
     run_dir="$out/runs/${name//[ ,]/_}_$mode"
     flag="--loop-detector $mode"
     [[ $mode == off ]] && flag="--no-loop-closing"
@@ -81,10 +85,11 @@ PY
   done
 done
 
-python3 - "$results" "$root/bench/results" "$(uptime)" <<'PY'
+python3 - "$results" "$root/bench/results" "$(uptime)" "$modes" <<'PY'
 import json, sys
 rows = [json.loads(line) for line in open(sys.argv[1])]
 out_dir, load = sys.argv[2], sys.argv[3].strip()
+modes = [m for m in sys.argv[4].split() if m != "off"]
 by_name = {}
 for row in rows:
     by_name.setdefault(row["configuration"], {})[row["loop_mode"]] = row
@@ -97,28 +102,35 @@ def loop_figures(run):
     worst = max((l["ground_truth_translation_error_m"] for l in checked), default=None)
     return loops, false_loops, worst
 
+def describe_text(run):
+    ms = run.get("loop_closing", {}).get("describe_ms_mean", 0.0)
+    return f"; CNN {ms:.0f} ms/kf" if ms > 0.5 else ""
+
 def change(on, off):
     return f"{100 * (on - off) / off:+.0f} %" if on is not None and off else "-"
 
 lines = ["# Loop closure", "",
          "`bench/loop_closure.sh`: `segslam run --deterministic --no-map`, loop closing off, on with",
-         "bag-of-words candidates and the union mask (`bow`, the default) and on with the descriptor",
-         "vote (`vote`). A loop is false when its verified relative pose is more than 0.1 m or",
+         "bag-of-words candidates and the union mask (`bow`, the default), with the descriptor vote",
+         "(`vote`) and with the CNN descriptor and the union mask (`cnn`: tiny_darknet pool2, masked",
+         "average pooling). A loop is false when its verified relative pose is more than 0.1 m or",
          "5 degrees from the ground truth's. Loops: accepted / false, with the worst translation",
          f"error and the query keyframes. Load while measuring: `{load}`.", "",
-         "| sequence | keyframes | ATE off (m) | ATE bow (m) | change | loops bow | ATE vote (m) | change | loops vote |",
-         "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
-for name, modes in by_name.items():
-    off = modes["off"]
+         "| sequence | keyframes | ATE off (m) | " +
+         " | ".join(f"ATE {m} (m) | change | loops {m}" for m in modes) + " |",
+         "| --- | --- | --- | " + " | ".join("--- | --- | ---" for _ in modes) + " |"]
+for name, runs in by_name.items():
+    off = runs["off"]
     cells = [name, str(off.get("keyframes", "-")), f"{off.get('ate_rmse_m', float('nan')):.4f}"]
-    for mode in ("bow", "vote"):
-        run = modes[mode]
+    for mode in modes:
+        run = runs[mode]
         loops, false_loops, worst = loop_figures(run)
         queries = ",".join(str(l["query_keyframe"]) for l in loops)
         worst_text = f", worst {worst:.3f} m" if worst is not None else ""
         cells += [f"{run.get('ate_rmse_m', float('nan')):.4f}",
                   change(run.get("ate_rmse_m"), off.get("ate_rmse_m")),
-                  f"{len(loops)} / {false_loops}{worst_text}" + (f" (kf {queries})" if queries else "")]
+                  f"{len(loops)} / {false_loops}{worst_text}" + (f" (kf {queries})" if queries else "")
+                  + describe_text(run)]
     lines.append("| " + " | ".join(cells) + " |")
 open(f"{out_dir}/loop_closure.md", "w").write("\n".join(lines) + "\n")
 json.dump(rows, open(f"{out_dir}/loop_closure.json", "w"), indent=1)

@@ -1,8 +1,6 @@
 #include "segslam/loop/bow_loop_detector.h"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
@@ -10,15 +8,6 @@
 #include "segslam/feature/static_mask.h"
 
 namespace segslam::loop {
-
-namespace {
-
-struct ScoredGroup {
-  double score = 0.0;
-  std::uint64_t best_keyframe = 0;
-};
-
-}  // namespace
 
 BowLoopDetector::BowLoopDetector(std::shared_ptr<const place::Vocabulary> vocabulary,
                                  BowLoopOptions options)
@@ -88,13 +77,14 @@ std::vector<std::uint64_t> BowLoopDetector::candidates(const map::KeyFrame& quer
                                                        const std::set<std::uint64_t>& covisible,
                                                        std::size_t max_candidates) const {
   const Entry query_entry = entryOf(query);
-  double threshold = std::numeric_limits<double>::infinity();
-  for (const std::uint64_t id : covisible) {
-    const Entry* neighbour = id == query.id ? nullptr : find(id);
-    if (neighbour) threshold = std::min(threshold, unionMaskScore(query_entry, *neighbour));
-  }
-  if (!std::isfinite(threshold)) threshold = 0.0;
-  threshold = std::max(threshold, options_.min_score);
+  const double threshold = covisibleScoreThreshold(
+      query, covisible,
+      [&](std::uint64_t id) -> std::optional<double> {
+        const Entry* neighbour = find(id);
+        if (!neighbour) return std::nullopt;
+        return unionMaskScore(query_entry, *neighbour);
+      },
+      options_.min_score);
 
   const auto hits = database_.query(query_entry.bow, options_.shortlist, [&](auto entry) {
     const map::KeyFrame* keyframe = entries_[entry].keyframe;
@@ -106,37 +96,9 @@ std::vector<std::uint64_t> BowLoopDetector::candidates(const map::KeyFrame& quer
     const double score = unionMaskScore(query_entry, entry);
     if (score > threshold) scores[entry.keyframe->id] = score;
   }
-
-  std::vector<ScoredGroup> groups;
-  for (const auto& [id, score] : scores) {
-    ScoredGroup group{score, id};
-    double best = score;
-    for (const map::KeyFrame* neighbour :
-         find(id)->keyframe->bestCovisibles(options_.group_neighbours)) {
-      const auto it = scores.find(neighbour->id);
-      if (it == scores.end()) continue;
-      group.score += it->second;
-      if (it->second > best) {
-        best = it->second;
-        group.best_keyframe = neighbour->id;
-      }
-    }
-    groups.push_back(group);
-  }
-  std::sort(groups.begin(), groups.end(), [](const ScoredGroup& a, const ScoredGroup& b) {
-    return a.score != b.score ? a.score > b.score : a.best_keyframe < b.best_keyframe;
-  });
-  std::vector<std::uint64_t> result;
-  for (const ScoredGroup& group : groups) {
-    if (result.size() >= max_candidates ||
-        group.score < options_.min_relative_group_score * groups.front().score) {
-      break;
-    }
-    if (std::find(result.begin(), result.end(), group.best_keyframe) == result.end()) {
-      result.push_back(group.best_keyframe);
-    }
-  }
-  return result;
+  return bestCandidateGroups(
+      scores, [&](std::uint64_t id) { return find(id)->keyframe; }, options_.groups,
+      max_candidates);
 }
 
 }  // namespace segslam::loop

@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "segslam/loop/candidate_groups.h"
 #include "segslam/loop/loop_candidate_detector.h"
 #include "segslam/place/bow_database.h"
 #include "segslam/place/vocabulary.h"
@@ -14,10 +15,9 @@
 namespace segslam::loop {
 
 struct BowLoopOptions {
-  std::size_t shortlist = 50;         // database hits (unmasked score) rescored with the union mask
-  double min_score = 0.05;            // union-mask score below which nothing is a candidate
-  std::size_t group_neighbours = 10;  // a candidate's best covisibles whose scores it accumulates
-  double min_relative_group_score = 0.75;  // of the best group's accumulated score
+  std::size_t shortlist = 50;  // database hits (unmasked score) rescored with the union mask
+  double min_score = 0.05;     // union-mask score below which nothing is a candidate
+  CandidateGroupOptions groups;
 };
 
 // Loop candidates by bag of words with the union mask (the "BoW + union mask"): every
@@ -27,11 +27,8 @@ struct BowLoopOptions {
 // hit's keypoints on the query's mask are left out, so that neither keyframe's moving objects
 // take part. A hit must score higher than the lowest such score between the query and its
 // covisible keyframes (which truly see the same place: the score's scale differs from scene to
-// scene), and at least `min_score`. Each hit then gathers the scores of its best covisible
-// keyframes that are hits too: a revisited place is seen by several keyframes, a look-alike
-// usually by one. Groups within `min_relative_group_score` of the best are returned, each by its
-// best-scoring keyframe. Keyframes are read through pointers: they must outlive the detector
-// (the map keeps even culled keyframes).
+// scene), and at least `min_score`; hits are then pooled by bestCandidateGroups. Keyframes are read
+// through pointers: they must outlive the detector (the map keeps even culled keyframes).
 class BowLoopDetector : public LoopCandidateDetector {
  public:
   explicit BowLoopDetector(std::shared_ptr<const place::Vocabulary> vocabulary,

@@ -11,13 +11,17 @@
 namespace segslam::loop {
 
 // Place recognition for loop closing: proposes old keyframes that may show the same place as a
-// query keyframe. It only proposes; LoopVerifier decides. Called by the loop closer with the map
-// mutex held, so implementations may read the keyframes.
+// query keyframe. It only proposes; LoopVerifier decides. add() and candidates() are called by the
+// loop closer with the map mutex held, so implementations may read the keyframes.
 class LoopCandidateDetector {
  public:
   virtual ~LoopCandidateDetector() = default;
   // Short name for logs and summary.json.
   [[nodiscard]] virtual std::string name() const = 0;
+  // Heavy per-keyframe work (a CNN descriptor), called on the loop-closing thread WITHOUT the map
+  // mutex, before candidates() and add() for that keyframe, so that tracking is never held up by
+  // it. May read only what never changes after the keyframe is made (image, dynamic mask).
+  virtual void describe(const map::KeyFrame& /*keyframe*/) {}
   // Remembers a keyframe as a future candidate.
   virtual void add(const map::KeyFrame& keyframe) = 0;
   // Up to `max_candidates` keyframe ids, best first. `covisible` are the query's covisible

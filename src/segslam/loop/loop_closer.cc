@@ -3,9 +3,11 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include "segslam/mapping/point_fusion.h"
 #include "segslam/optim/bundle_adjuster.h"
+#include "segslam/util/elapsed_time.h"
 
 namespace segslam::loop {
 
@@ -149,9 +151,18 @@ std::shared_ptr<map::KeyFrame> LoopCloser::popKeyFrame() {
 }
 
 void LoopCloser::processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe) {
+  const auto describe_start = std::chrono::steady_clock::now();
+  detector_->describe(*keyframe);
+  {
+    std::lock_guard lock(stats_mutex_);
+    ++stats_.keyframes_described;
+    stats_.describe_ms_total += util::millisecondsSince(describe_start);
+  }
   std::vector<std::uint64_t> confirmed;
   {
     std::lock_guard lock(map_.mutex);
+    // The image was kept for describe() only: a keyframe's pixels would dominate the map's memory.
+    keyframe->image.release();
     if (keyframe->bad) return;
     keyframes_by_id_[keyframe->id] = keyframe.get();
     confirmed = confirmedCandidates(*keyframe);

@@ -57,6 +57,10 @@ struct LoopClosingStats {
   int loops_accepted = 0;
   int global_bas_completed = 0;
   int global_bas_cancelled = 0;
+  // LoopCandidateDetector::describe() per keyframe (the CNN's forward pass), wall time on the
+  // loop-closing thread.
+  int keyframes_described = 0;
+  double describe_ms_total = 0.0;
   std::vector<LoopRecord> loops;
 };
 

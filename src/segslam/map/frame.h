@@ -80,6 +80,9 @@ class Frame {
   cv::Mat descriptors;                     // N x 32, CV_8U
   cv::Mat dynamic_mask;
   cv::Mat depth_image;  // CV_32F metres, shared with the caller (not copied)
+  // The colour image (CV_8UC3), set only when a keyframe made from this frame needs it later (the
+  // CNN loop detector); shared, not copied.
+  cv::Mat image;
   KeypointGrid grid;
 
   std::vector<std::shared_ptr<MapPoint>> map_points;  // match per keypoint, may be null

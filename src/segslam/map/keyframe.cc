@@ -19,6 +19,7 @@ KeyFrame::KeyFrame(std::uint64_t keyframe_id, const Frame& frame)
       right_u(frame.right_u),
       descriptors(frame.descriptors),
       dynamic_mask(frame.dynamic_mask),
+      image(frame.image),
       grid(frame.grid),
       T_cw(frame.T_cw),
       map_points_(frame.keypoints.size()) {}

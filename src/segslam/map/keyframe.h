@@ -59,6 +59,7 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   std::vector<float> right_u;
   cv::Mat descriptors;
   cv::Mat dynamic_mask;
+  cv::Mat image;  // the frame's colour image until the loop closer has described the keyframe
   KeypointGrid grid;
   geometry::Pose T_cw;
   bool bad = false;

@@ -57,7 +57,8 @@ TEST(CnnBackboneConfig, ShippedTinyDarknetConfigIsValid) {
   const auto file =
       std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config/models/tiny_darknet_imagenet.yaml";
   const CnnBackboneConfig config = readCnnBackboneConfig(file);
-  EXPECT_EQ(config.input_size, cv::Size(640, 480));
+  EXPECT_EQ(config.input_size, cv::Size(320, 240));
+  EXPECT_EQ(config.stored_grid, cv::Size(20, 15));
   ASSERT_EQ(config.layers.size(), 6u);
   EXPECT_EQ(config.layers[2].name, "pool3");
   EXPECT_EQ(config.layers[2].layer, "onnx_node_output_0!max_pooling2d_3");

@@ -41,16 +41,17 @@ TEST(CnnPlaceMethod, TinyDarknetGivesTheDocumentedLayerShapes) {
   SEGSLAM_REQUIRE_BACKBONE(extractor);
   const cv::Mat image(480, 640, CV_8UC3, cv::Scalar(90, 120, 150));
   const std::vector<cv::Mat> blobs = extractor->extract(image);
-  const std::vector<std::vector<int>> expected = {{1, 16, 240, 320}, {1, 32, 120, 160},
-                                                  {1, 128, 60, 80},  {1, 256, 30, 40},
-                                                  {1, 128, 30, 40},  {1, 1000}};
+  // The config's 320 x 240 input: each pooling halves the grid.
+  const std::vector<std::vector<int>> expected = {{1, 16, 120, 160}, {1, 32, 60, 80},
+                                                  {1, 128, 30, 40},  {1, 256, 15, 20},
+                                                  {1, 128, 15, 20},  {1, 1000}};
   ASSERT_EQ(blobs.size(), expected.size());
   for (std::size_t l = 0; l < blobs.size(); ++l) {
     std::vector<int> shape(blobs[l].size.p, blobs[l].size.p + blobs[l].dims);
     EXPECT_EQ(shape, expected[l]) << "layer " << l;
   }
   CnnFeatureBank bank(std::move(*extractor));
-  EXPECT_EQ(bank.grids()[0], cv::Size(40, 30));
+  EXPECT_EQ(bank.grids()[0], cv::Size(20, 15));
   EXPECT_EQ(bank.grids()[5], cv::Size(1, 1));
   EXPECT_EQ(bank.channels()[3], 256);
 }
@@ -76,8 +77,9 @@ TEST(CnnPlaceMethod, PooledUnionMaskIgnoresAMaskedRectangle) {
     const auto* pooled = methodNamed(methods, "cnn:" + layer + ":pooled");
     ASSERT_NE(pooled, nullptr);
     const double with_mask = pooled->similarity(0, 1, true);
-    // The last conv block sees further than its 16 px erosion: some of the rectangle leaks in.
-    EXPECT_GT(with_mask, layer == "conv" ? 0.95 : 0.98) << layer;
+    // The last conv block sees further than its 16 px erosion: some of the rectangle leaks in
+    // (more at the config's 320 x 240 input, where its reach covers twice the share of the view).
+    EXPECT_GT(with_mask, layer == "conv" ? 0.9 : 0.98) << layer;
     EXPECT_GT(with_mask, pooled->similarity(0, 1, false)) << layer;
   }
 }

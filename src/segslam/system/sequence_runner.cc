@@ -223,12 +223,15 @@ nlohmann::json loopClosingJson(const SequenceRunSummary& summary) {
     }
     loops.push_back(entry);
   }
-  return {{"detector", stats.detector},
-          {"candidates_verified", stats.consistent_candidates},
-          {"loops_accepted", stats.loops_accepted},
-          {"global_bas_completed", stats.global_bas_completed},
-          {"global_bas_cancelled", stats.global_bas_cancelled},
-          {"loops", loops}};
+  return {
+      {"detector", stats.detector},
+      {"candidates_verified", stats.consistent_candidates},
+      {"loops_accepted", stats.loops_accepted},
+      {"global_bas_completed", stats.global_bas_completed},
+      {"global_bas_cancelled", stats.global_bas_cancelled},
+      {"describe_ms_mean",
+       stats.keyframes_described > 0 ? stats.describe_ms_total / stats.keyframes_described : 0.0},
+      {"loops", loops}};
 }
 
 }  // namespace

@@ -31,6 +31,9 @@ feature::OrbExtractorOptions extractorOptions(feature::OrbExtractorOptions optio
 }
 
 std::unique_ptr<loop::LoopCandidateDetector> loopCandidateDetector(const SlamOptions& options) {
+  if (options.loop_backbone) {
+    return std::make_unique<loop::CnnLoopDetector>(*options.loop_backbone, options.loop_cnn);
+  }
   if (options.loop_vocabulary) {
     return std::make_unique<loop::BowLoopDetector>(options.loop_vocabulary, options.loop_bow);
   }
@@ -78,6 +81,8 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
   stats.keypoints = static_cast<int>(keypoints.size());
   map::Frame frame(stats.frame_id, timestamp, std::move(keypoints), std::move(descriptors), depth_m,
                    mask, camera_);
+  // Shared, not copied: the caller hands a fresh image per frame.
+  if (loop_closer_ && options_.loop_backbone) frame.image = bgr;
   {
     std::lock_guard lock(map_.mutex);
     const auto result = tracker_.track(std::move(frame));

@@ -3,12 +3,14 @@
 #include <cstdint>
 #include <memory>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "segslam/core/camera.h"
 #include "segslam/core/trajectory.h"
 #include "segslam/feature/orb_extractor.h"
 #include "segslam/loop/bow_loop_detector.h"
+#include "segslam/loop/cnn_loop_detector.h"
 #include "segslam/loop/descriptor_vote_detector.h"
 #include "segslam/loop/loop_closer.h"
 #include "segslam/map/map.h"
@@ -21,11 +23,14 @@ struct SlamOptions {
   feature::OrbExtractorOptions orb;
   tracking::TrackerOptions tracker;
   mapping::LocalMapperOptions mapper;
-  // Loop closing on its own thread (inline in deterministic mode). Candidates by bag of words
-  // with the union mask (loop::BowLoopDetector) when a vocabulary is given, else by
-  // loop::DescriptorVoteDetector, which needs none.
+  // Loop closing on its own thread (inline in deterministic mode). Candidates by a CNN
+  // descriptor with the union mask (loop::CnnLoopDetector) when a backbone is given, else by bag
+  // of words with the union mask (loop::BowLoopDetector) when a vocabulary is given, else by
+  // loop::DescriptorVoteDetector, which needs neither.
   bool loop_closing = true;
   loop::LoopClosingOptions loop;
+  std::optional<loop::CnnLoopBackbone> loop_backbone;
+  loop::CnnLoopOptions loop_cnn;
   std::shared_ptr<const place::Vocabulary> loop_vocabulary;
   loop::BowLoopOptions loop_bow;
   loop::DescriptorVoteOptions loop_detector;
@@ -63,6 +68,8 @@ class SlamSystem {
   SlamSystem& operator=(const SlamSystem&) = delete;
 
   // bgr: CV_8UC3. depth_m: CV_32F metres. dynamic_mask: empty or CV_8U, non-zero = dynamic.
+  // With the CNN loop detector, keyframes share bgr (not copied) until it is described: hand a
+  // fresh image per frame.
   FrameStats processFrame(double timestamp, const cv::Mat& bgr, const cv::Mat& depth_m,
                           const cv::Mat& dynamic_mask);
   // A dynamic mask for an earlier frame (frame_id as processFrame numbered it), arrived late:
