@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/calib3d.hpp>
 
 #include "segslam/core/undistortion.h"
 
@@ -71,7 +72,14 @@ FrameCamera::FrameCamera(const core::Camera& cam, double bf, double close_depth_
       stereo{cam.fx, cam.fy, cam.cx, cam.cy, bf},
       close_depth_m(close_depth_factor * bf / cam.fx),
       undistorted_bounds(undistortedBounds(cam)),
-      levels(scale_levels) {}
+      levels(scale_levels) {
+  if (!cam.hasDistortion()) return;
+  cv::Mat unused;
+  const cv::Mat K = core::cameraMatrix(cam);
+  cv::initUndistortRectifyMap(K, cv::Mat(1, 5, CV_64F, const_cast<double*>(cam.distortion.data())),
+                              cv::Mat(), K, cv::Size(cam.width, cam.height), CV_32FC2,
+                              raw_pixel_of_undistorted, unused);
+}
 
 Frame::Frame(std::uint64_t frame_id, double stamp, std::vector<cv::KeyPoint> raw_keypoints,
              cv::Mat frame_descriptors, const cv::Mat& depth_m, cv::Mat mask,

@@ -46,6 +46,9 @@ struct FrameCamera {
   double close_depth_m = 3.0;     // depth below which a keypoint's depth is trusted for new points
   cv::Rect2d undistorted_bounds;  // image area after undistortion
   feature::ScaleLevels levels;
+  // Where each undistorted pixel lies in the raw image (CV_32FC2), to compare map points with the
+  // raw depth image; empty when the camera has no distortion.
+  cv::Mat raw_pixel_of_undistorted;
 
   FrameCamera(const core::Camera& camera, double bf, double close_depth_factor,
               const feature::ScaleLevels& levels);

@@ -9,7 +9,7 @@ std::vector<std::shared_ptr<map::MapPoint>> pointsSeenThrough(
     const FreeSpaceOptions& options) {
   std::vector<std::shared_ptr<map::MapPoint>> seen_through;
   if (frame.depth_image.empty()) return seen_through;
-  for (const auto& projected : projectIntoRawImage(points, frame.T_cw, frame.camera->camera)) {
+  for (const auto& projected : projectIntoRawImage(points, frame.T_cw, *frame.camera)) {
     const float measured =
         nearestDepthAround(frame.depth_image, projected.pixel, options.window_radius_px);
     if (measured <= 0.0f) continue;

@@ -8,7 +8,7 @@ namespace segslam::tracking {
 
 std::vector<std::shared_ptr<map::MapPoint>> pointsOnDynamicSurface(
     const std::vector<std::shared_ptr<map::MapPoint>>& points, const geometry::Pose& T_cw,
-    const core::Camera& camera, const cv::Mat& dynamic_mask, const cv::Mat& depth,
+    const map::FrameCamera& camera, const cv::Mat& dynamic_mask, const cv::Mat& depth,
     const DynamicSurfaceOptions& options) {
   std::vector<std::shared_ptr<map::MapPoint>> on_surface;
   if (dynamic_mask.empty() || depth.empty()) return on_surface;

@@ -4,8 +4,8 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "segslam/core/camera.h"
 #include "segslam/geometry/pose.h"
+#include "segslam/map/frame.h"
 #include "segslam/map/map_point.h"
 
 namespace segslam::tracking {
@@ -24,7 +24,7 @@ struct DynamicSurfaceOptions {
 // T_cw, dynamic_mask (CV_8U, non-zero = dynamic) and depth (CV_32F metres) are that frame's.
 std::vector<std::shared_ptr<map::MapPoint>> pointsOnDynamicSurface(
     const std::vector<std::shared_ptr<map::MapPoint>>& points, const geometry::Pose& T_cw,
-    const core::Camera& camera, const cv::Mat& dynamic_mask, const cv::Mat& depth,
+    const map::FrameCamera& camera, const cv::Mat& dynamic_mask, const cv::Mat& depth,
     const DynamicSurfaceOptions& options = {});
 
 }  // namespace segslam::tracking

@@ -8,6 +8,7 @@ namespace {
 // A person 1.5 m away in front of a wall at 3 m, masked as dynamic in the left half of the image.
 struct PersonScene {
   core::Camera camera;
+  map::FrameCamera frame_camera{camera, 40.0, 40.0, feature::ScaleLevels(8, 1.2)};
   cv::Mat depth{camera.height, camera.width, CV_32F, cv::Scalar(3.0f)};
   cv::Mat mask{camera.height, camera.width, CV_8U, cv::Scalar(0)};
 
@@ -25,8 +26,8 @@ std::shared_ptr<map::MapPoint> mapPointAt(double x, double y, double z) {
 TEST(LateMaskCheck, PointsOnTheMaskedSurfaceAreFound) {
   const PersonScene scene;
   const auto on_person = mapPointAt(-0.3, 0.1, 1.5);
-  const auto found = pointsOnDynamicSurface({on_person}, geometry::Pose::Identity(), scene.camera,
-                                            scene.mask, scene.depth);
+  const auto found = pointsOnDynamicSurface({on_person}, geometry::Pose::Identity(),
+                                            scene.frame_camera, scene.mask, scene.depth);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found.front(), on_person);
 }
@@ -39,7 +40,7 @@ TEST(LateMaskCheck, BackgroundBehindTheMaskAndOutsideItIsKept) {
   const auto outside_mask = mapPointAt(0.3, 0.1, 1.5);
   const auto found =
       pointsOnDynamicSurface({behind_person, outside_mask}, geometry::Pose::Identity(),
-                             scene.camera, scene.mask, scene.depth);
+                             scene.frame_camera, scene.mask, scene.depth);
   EXPECT_TRUE(found.empty());
 }
 
@@ -49,9 +50,10 @@ TEST(LateMaskCheck, TheFramesPoseIsUsed) {
   const auto on_person = mapPointAt(0.7, 0.1, 1.5);
   geometry::Pose T_cw = geometry::Pose::Identity();
   T_cw.translation() = Eigen::Vector3d(-1.0, 0.0, 0.0);
-  EXPECT_EQ(pointsOnDynamicSurface({on_person}, T_cw, scene.camera, scene.mask, scene.depth).size(),
-            1u);
-  EXPECT_TRUE(pointsOnDynamicSurface({on_person}, geometry::Pose::Identity(), scene.camera,
+  EXPECT_EQ(
+      pointsOnDynamicSurface({on_person}, T_cw, scene.frame_camera, scene.mask, scene.depth).size(),
+      1u);
+  EXPECT_TRUE(pointsOnDynamicSurface({on_person}, geometry::Pose::Identity(), scene.frame_camera,
                                      scene.mask, scene.depth)
                   .empty());
 }

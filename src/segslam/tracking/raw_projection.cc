@@ -1,31 +1,31 @@
 #include "segslam/tracking/raw_projection.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
-#include <opencv2/calib3d.hpp>
-
-#include "segslam/core/undistortion.h"
 
 namespace segslam::tracking {
 
 std::vector<RawProjection> projectIntoRawImage(
     const std::vector<std::shared_ptr<map::MapPoint>>& points, const geometry::Pose& T_cw,
-    const core::Camera& camera) {
+    const map::FrameCamera& camera) {
+  const auto& K = camera.stereo;
+  const int width = camera.camera.width;
+  const int height = camera.camera.height;
+  const cv::Mat& raw_of = camera.raw_pixel_of_undistorted;
   std::vector<RawProjection> projections;
-  std::vector<cv::Point3f> in_camera;
   for (const auto& point : points) {
     if (!point || point->bad) continue;
     const Eigen::Vector3d p_c = T_cw * point->position;
     if (p_c.z() <= 0.0) continue;
-    projections.push_back({point, {}, p_c.z()});
-    in_camera.emplace_back(static_cast<float>(p_c.x()), static_cast<float>(p_c.y()),
-                           static_cast<float>(p_c.z()));
+    const int u = static_cast<int>(std::lround(K.fx * p_c.x() / p_c.z() + K.cx));
+    const int v = static_cast<int>(std::lround(K.fy * p_c.y() / p_c.z() + K.cy));
+    if (u < 0 || v < 0 || u >= width || v >= height) continue;
+    const cv::Point2f pixel = raw_of.empty()
+                                  ? cv::Point2f(static_cast<float>(u), static_cast<float>(v))
+                                  : raw_of.at<cv::Point2f>(v, u);
+    projections.push_back({point, pixel, p_c.z()});
   }
-  if (projections.empty()) return projections;
-  std::vector<cv::Point2f> pixels;
-  cv::projectPoints(in_camera, cv::Vec3d::zeros(), cv::Vec3d::zeros(), core::cameraMatrix(camera),
-                    cv::Mat(1, 5, CV_64F, const_cast<double*>(camera.distortion.data())), pixels);
-  for (std::size_t k = 0; k < projections.size(); ++k) projections[k].pixel = pixels[k];
   return projections;
 }
 

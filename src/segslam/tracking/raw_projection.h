@@ -4,8 +4,8 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "segslam/core/camera.h"
 #include "segslam/geometry/pose.h"
+#include "segslam/map/frame.h"
 #include "segslam/map/map_point.h"
 
 namespace segslam::tracking {
@@ -19,11 +19,10 @@ struct RawProjection {
   double depth;  // along the optical axis, metres
 };
 
-// Good points in front of the camera, projected; those outside the image are kept (callers
-// check their own windows).
+// Good points in front of the camera that project into the image.
 std::vector<RawProjection> projectIntoRawImage(
     const std::vector<std::shared_ptr<map::MapPoint>>& points, const geometry::Pose& T_cw,
-    const core::Camera& camera);
+    const map::FrameCamera& camera);
 
 // Nearest valid depth in the window of this radius around the pixel, or 0 when the window
 // leaves the image or has a hole.

@@ -294,9 +294,8 @@ int Tracker::cullPointsOnLateMask(std::uint64_t frame_id, const cv::Mat& dynamic
   const auto pose = std::find_if(recent_poses_.begin(), recent_poses_.end(),
                                  [&](const auto& entry) { return entry.first == frame_id; });
   if (pose == recent_poses_.end()) return 0;
-  const auto on_surface =
-      pointsOnDynamicSurface(local_points_, pose->second, current_.camera->camera, dynamic_mask,
-                             depth_m, options_.late_mask);
+  const auto on_surface = pointsOnDynamicSurface(local_points_, pose->second, *current_.camera,
+                                                 dynamic_mask, depth_m, options_.late_mask);
   for (const auto& point : on_surface) point->setBad();
   return static_cast<int>(on_surface.size());
 }
