@@ -157,10 +157,11 @@ void registerRunCommand(CLI::App& app) {
                   "something that moved away (0 = off)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  run->add_flag("--no-late-mask-culling",
-                [options](std::int64_t) { options->run.slam.tracker.late_mask_max_age = 0; },
-                "Keep map points that a network output, arriving after its frame, shows on a "
-                "moving object");
+  run->add_flag(
+      "--no-late-mask-culling",
+      [options](std::int64_t) { options->run.slam.tracker.late_mask_max_age = 0; },
+      "Keep map points that a network output, arriving after its frame, shows on a "
+      "moving object");
   run->add_option("--features", options->run.slam.orb.num_features, "ORB features per frame")
       ->capture_default_str()
       ->check(CLI::Range(100, 10000));

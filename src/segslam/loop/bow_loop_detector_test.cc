@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "segslam/feature/orb_extractor.h"
+#include "segslam/loop/loop_test_scenes.h"
 #include "segslam/synth/sequence.h"
 
 namespace segslam::loop {
@@ -72,16 +73,7 @@ class BowLoopDetectorOnALap : public ::testing::Test {
  protected:
   static constexpr int kStep = 20;
 
-  BowLoopDetectorOnALap() : sequence_(lapOptions()) {}
-
-  static synth::SynthOptions lapOptions() {
-    synth::SynthOptions options;
-    options.path = "room";
-    options.people = 0;
-    options.frames = 641;
-    options.seed = 1;
-    return options;
-  }
+  BowLoopDetectorOnALap() : sequence_(roomLapOptions()) {}
 
   map::KeyFrame& addKeyFrame(int frame) {
     const synth::FrameImages images = sequence_.renderFrame(frame);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "segslam/loop/loop_test_scenes.h"
 #include "segslam/synth/sequence.h"
 #include "segslam/testing/test_support.h"
 #include "segslam/util/error.h"
@@ -51,7 +52,7 @@ class CnnLoopDetectorOnALap : public ::testing::Test {
  protected:
   static constexpr int kStep = 20;
 
-  CnnLoopDetectorOnALap() : sequence_(lapOptions()) {}
+  CnnLoopDetectorOnALap() : sequence_(roomLapOptions()) {}
 
   void SetUp() override {
     backbone_ = sharedBackbone();
@@ -59,15 +60,6 @@ class CnnLoopDetectorOnALap : public ::testing::Test {
       GTEST_SKIP() << "../shared/models/tiny_darknet_imagenet.onnx not found (set "
                       "SEGSLAM_SHARED_DIR): the CNN loop detector needs the backbone";
     }
-  }
-
-  static synth::SynthOptions lapOptions() {
-    synth::SynthOptions options;
-    options.path = "room";
-    options.people = 0;
-    options.frames = 641;
-    options.seed = 1;
-    return options;
   }
 
   map::KeyFrame& addKeyFrame(int frame) {

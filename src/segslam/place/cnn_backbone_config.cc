@@ -162,7 +162,8 @@ CnnBackboneConfig parseCnnBackboneConfig(std::string_view text, const std::files
 std::filesystem::path resolveBackboneModelFile(
     const CnnBackboneConfig& config, const std::filesystem::path& config_file,
     const std::optional<std::filesystem::path>& override_file) {
-  return util::findModelFile(config.model, config_file, override_file, "CNN backbone model");
+  return util::findModelFile(config.model, config_file, override_file, "CNN backbone model",
+                             "--backbone-model");
 }
 
 }  // namespace segslam::place

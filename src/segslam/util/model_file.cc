@@ -13,7 +13,7 @@ namespace segslam::util {
 std::filesystem::path findModelFile(const std::filesystem::path& model,
                                     const std::filesystem::path& config_file,
                                     const std::optional<std::filesystem::path>& override_file,
-                                    const std::string& kind) {
+                                    const std::string& kind, const std::string& override_flag) {
   if (override_file) {
     if (!std::filesystem::is_regular_file(*override_file)) {
       failAt(*override_file, kind + " file not found");
@@ -30,9 +30,9 @@ std::filesystem::path findModelFile(const std::filesystem::path& model,
   }
   std::vector<std::string> names;
   for (const auto& candidate : tried) names.push_back(candidate.string());
-  failAt(config_file, fmt::format("{} '{}' not found (tried {}; pass --model FILE or set "
+  failAt(config_file, fmt::format("{} '{}' not found (tried {}; pass {} FILE or set "
                                   "SEGSLAM_MODEL_DIR)",
-                                  kind, model.string(), fmt::join(names, ", ")));
+                                  kind, model.string(), fmt::join(names, ", "), override_flag));
 }
 
 }  // namespace segslam::util

@@ -13,6 +13,7 @@ namespace segslam::util {
 std::filesystem::path findModelFile(const std::filesystem::path& model,
                                     const std::filesystem::path& config_file,
                                     const std::optional<std::filesystem::path>& override_file,
-                                    const std::string& kind);
+                                    const std::string& kind,
+                                    const std::string& override_flag = "--model");
 
 }  // namespace segslam::util
