@@ -71,6 +71,12 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
   fmt::print(
       "  speed      {:.1f} frames/s end to end, {:.1f} s wall, local BA {:.1f} s, peak RSS {} MB\n",
       s.frames_per_second, s.wall_seconds, s.bundle_adjustment_seconds, s.peak_rss_mb);
+  if (s.realtime) {
+    fmt::print(
+        "  realtime   frames at the dataset's rate, taken up a median {:.1f} ms (p95 {:.1f}, "
+        "max {:.1f}) after arrival\n",
+        s.realtime_lag.median_ms, s.realtime_lag.p95_ms, s.realtime_lag.max_ms);
+  }
   if (s.network_runs > 0) {
     const std::string where =
         options.run.slam.deterministic
@@ -196,6 +202,11 @@ void registerRunCommand(CLI::App& app) {
       ->capture_default_str();
   run->add_flag("--deterministic", options->run.slam.deterministic,
                 "Run local mapping inline after each keyframe: reproducible results, slower");
+  auto* deterministic = run->get_option("--deterministic");
+  run->add_flag("--realtime", options->run.realtime,
+                "Hand frames over at the dataset's frame rate, as a camera would, instead of as "
+                "fast as they load")
+      ->excludes(deterministic);
   run->add_option("--seed", options->run.seed, "Seed of the random number generators")
       ->capture_default_str();
   run->add_option("--max-frames", options->run.max_frames, "Process at most this many frames")

@@ -88,6 +88,30 @@ TEST(MapBuilder, KeyFramesWithoutPoseAreLeftOutAndRebuildsFollowNewPoses) {
   for (const auto& p : moved.static_points.points) EXPECT_NEAR(p.z(), 4.0f, 1e-4f);
 }
 
+// A 3 x 3 patch far behind a wall: its centre pixel is no depth edge (its neighbours agree), so
+// only the statistical outlier removal can keep it out of the map.
+TEST(MapBuilder, IsolatedPointsAreCleanedFromTheMap) {
+  const auto camera = builderCamera();
+  MapBuilderOptions options = testOptions();
+  options.cleaning.outlier_neighbours = 8;
+  MapBuilder builder(camera, options);
+  KeyFrameImages view = flatView(camera, 1.0f, 50);
+  view.depth(cv::Rect(20, 10, 3, 3)).setTo(2.5f);
+  builder.addKeyFrame(0, 1.0, view);
+  core::Trajectory poses;
+  poses.append(1.0, translation(0.0, 0.0, 0.0));
+  const DenseMap map = builder.build(poses);
+  ASSERT_GT(map.static_points.size(), 100u);
+  for (const auto& p : map.static_points.points) EXPECT_NEAR(p.z(), 1.0f, 1e-4f);
+
+  options.cleaning.outlier_neighbours = 0;
+  MapBuilder uncleaned(camera, options);
+  uncleaned.addKeyFrame(0, 1.0, view);
+  const DenseMap uncleaned_map = uncleaned.build(poses);
+  const auto& kept = uncleaned_map.static_points.points;
+  EXPECT_TRUE(std::any_of(kept.begin(), kept.end(), [](const auto& p) { return p.z() > 2.0f; }));
+}
+
 TEST(MapBuilder, NetworkLabelsGiveObjectsAndPeopleGoToTheDynamicLayer) {
   core::Camera camera;
   camera.width = 64;

@@ -94,6 +94,40 @@ cv::Mat objectRegions(const cv::Mat& mask, const cv::Mat& regions, const cv::Mat
   return object;
 }
 
+// refineMaskByDepth on the part of the image that can matter: the search band around the mask.
+cv::Mat refineWithin(const cv::Mat& mask, const cv::Mat& depth, int band_px,
+                     const std::vector<float>& object_depths,
+                     const DepthRefinementOptions& options) {
+  const cv::Mat interior = shrunkMask(mask, options.core_erosion_px);
+  cv::Mat blocker = fillBlocker(mask, band_px);
+  const int num_values = fillRegions(interior, depth, blocker, options) + 1;
+  cv::Mat refined = objectRegions(mask, blocker(cv::Rect(1, 1, mask.cols, mask.rows)), depth,
+                                  num_values, object_depths, options);
+  refined.setTo(255, (mask != 0) & (depth <= 0.0f));
+  // Parts too thin to hold an interior seed (limbs, small objects) are kept as they are. The
+  // interior grown back by a square reaches every pixel of a thick part, corners included.
+  cv::Mat thick_parts;
+  const int reach = 2 * options.core_erosion_px + 3;
+  cv::dilate(interior, thick_parts,
+             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(reach, reach)));
+  refined.setTo(255, (mask != 0) & (thick_parts == 0));
+  return refined;
+}
+
+// The mask's bounding box grown by the band (and a margin that keeps the window's edge off the
+// mask, where it would count as background), with its corner on the seed grid, so that the
+// window holds everything the refinement looks at and seeds the same pixels as the whole image.
+cv::Rect searchWindow(const cv::Mat& mask, int band_px, int seed_step_px) {
+  const cv::Rect box = cv::boundingRect(mask);
+  const int margin = band_px + 2;
+  const int step = std::max(seed_step_px, 1);
+  const int left = std::max(box.x - margin, 0) / step * step;
+  const int top = std::max(box.y - margin, 0) / step * step;
+  const int right = std::min(box.x + box.width + margin, mask.cols);
+  const int bottom = std::min(box.y + box.height + margin, mask.rows);
+  return {left, top, right - left, bottom - top};
+}
+
 }  // namespace
 
 std::vector<float> objectDepths(const cv::Mat& mask, const cv::Mat& depth,
@@ -122,19 +156,10 @@ cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px
                           const std::vector<float>& object_depths,
                           const DepthRefinementOptions& options) {
   if (depth.empty() || mask.empty() || cv::countNonZero(mask) == 0) return mask.clone();
-  const cv::Mat interior = shrunkMask(mask, options.core_erosion_px);
-  cv::Mat blocker = fillBlocker(mask, std::max(band_px, 1));
-  const int num_values = fillRegions(interior, depth, blocker, options) + 1;
-  cv::Mat refined = objectRegions(mask, blocker(cv::Rect(1, 1, mask.cols, mask.rows)), depth,
-                                  num_values, object_depths, options);
-  refined.setTo(255, (mask != 0) & (depth <= 0.0f));
-  // Parts too thin to hold an interior seed (limbs, small objects) are kept as they are. The
-  // interior grown back by a square reaches every pixel of a thick part, corners included.
-  cv::Mat thick_parts;
-  const int reach = 2 * options.core_erosion_px + 3;
-  cv::dilate(interior, thick_parts,
-             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(reach, reach)));
-  refined.setTo(255, (mask != 0) & (thick_parts == 0));
+  const int band = std::max(band_px, 1);
+  const cv::Rect window = searchWindow(mask, band, options.seed_step_px);
+  cv::Mat refined = cv::Mat::zeros(mask.size(), CV_8UC1);
+  refineWithin(mask(window), depth(window), band, object_depths, options).copyTo(refined(window));
   return refined;
 }
 

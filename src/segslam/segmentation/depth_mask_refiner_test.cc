@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <opencv2/core.hpp>
+
 namespace segslam::segmentation {
 namespace {
 
@@ -51,6 +53,26 @@ TEST(RefineMaskByDepth, RegionsAtAnotherDepthThanTheObjectsAreDropped) {
   const cv::Mat old_mask = maskOf(uncovered);
   EXPECT_EQ(cv::countNonZero(refineMaskByDepth(old_mask, depth, 8, {1.5f})), 0);
   EXPECT_EQ(cv::countNonZero(refineMaskByDepth(old_mask, depth, 8) != old_mask), 0);
+}
+
+// Only the band around the mask is searched: a frame of more image around the scene (a whole
+// number of seed steps wide, so the seeds stay on the same pixels) changes nothing.
+TEST(RefineMaskByDepth, ImageBeyondTheBandDoesNotChangeTheResult) {
+  cv::Mat depth = sceneDepth();
+  depth(cv::Rect(120, 10, 20, 20)).setTo(1.5f);  // another object at the same depth, out of reach
+  const cv::Mat lagging = maskOf(kObject - cv::Point(9, 3));
+  const cv::Mat refined = refineMaskByDepth(lagging, depth, 12, {1.5f});
+  constexpr int kFrame = 40;
+  cv::Mat wider_depth;
+  cv::Mat wider_mask;
+  cv::copyMakeBorder(depth, wider_depth, kFrame, kFrame, kFrame, kFrame, cv::BORDER_CONSTANT,
+                     cv::Scalar(3.0f));
+  cv::copyMakeBorder(lagging, wider_mask, kFrame, kFrame, kFrame, kFrame, cv::BORDER_CONSTANT,
+                     cv::Scalar(0));
+  const cv::Mat wider = refineMaskByDepth(wider_mask, wider_depth, 12, {1.5f});
+  EXPECT_GT(cv::countNonZero(refined), 0);
+  EXPECT_EQ(cv::countNonZero(wider(cv::Rect(kFrame, kFrame, kWidth, kHeight)) != refined), 0);
+  EXPECT_EQ(cv::countNonZero(wider), cv::countNonZero(refined));
 }
 
 TEST(RefineMaskByDepth, PartsTooThinForAnInteriorAreKept) {

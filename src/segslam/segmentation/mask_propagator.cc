@@ -15,6 +15,7 @@ MaskPropagator::MaskPropagator(int history, double flow_scale)
 }
 
 void MaskPropagator::addFrame(std::uint64_t frame_id, const cv::Mat& image) {
+  if (has_frame_ && frame_id == newest_id_) return;
   cv::Mat gray;
   if (image.channels() == 3) {
     cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);

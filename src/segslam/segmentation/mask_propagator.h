@@ -16,6 +16,7 @@ class MaskPropagator {
   explicit MaskPropagator(int history = 30, double flow_scale = 0.5);
 
   // Adds the newest frame (CV_8UC3 BGR or CV_8UC1) and computes the flow back to the previous one.
+  // Adding the newest frame again does nothing, so that several users can share one propagator.
   void addFrame(std::uint64_t frame_id, const cv::Mat& image);
 
   // `labels` (CV_8UC1, computed on frame `source_id`) as seen in the newest frame. Empty when the

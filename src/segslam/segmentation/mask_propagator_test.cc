@@ -43,6 +43,26 @@ TEST(MaskPropagator, LabelsFollowTheImageMotion) {
   EXPECT_EQ(cv::countNonZero((carried != 0) & (carried != 7)), 0);  // labels are not blended
 }
 
+// Two mask streams over the same frames share one propagator: the second addFrame of a frame
+// must not replace the flow into it by a zero flow from the frame to itself.
+TEST(MaskPropagator, AddingTheNewestFrameAgainKeepsItsFlow) {
+  const cv::Mat base = texture({320, 240});
+  MaskPropagator shared;
+  MaskPropagator single;
+  for (int frame = 0; frame <= 2; ++frame) {
+    const cv::Mat image = shifted(base, 4.0 * frame, 0.0);
+    shared.addFrame(frame, image);
+    shared.addFrame(frame, image);
+    single.addFrame(frame, image);
+  }
+  cv::Mat labels = cv::Mat::zeros(base.size(), CV_8UC1);
+  labels(cv::Rect(100, 100, 60, 40)).setTo(5);
+  const cv::Mat carried = shared.propagate(labels, 0);
+  ASSERT_FALSE(carried.empty());
+  EXPECT_EQ(cv::countNonZero(carried != single.propagate(labels, 0)), 0);
+  EXPECT_LT(iou(carried == 5, labels == 5), 0.9);  // it moved
+}
+
 TEST(MaskPropagator, NewestFrameIsReturnedAsIsAndUnknownSourcesGiveNothing) {
   const cv::Mat base = texture({160, 120});
   MaskPropagator propagator(/*history=*/2);

@@ -17,8 +17,11 @@ StreamFrame copyOf(const StreamFrame& frame) {
 
 }  // namespace
 
-MaskStream::MaskStream(Segment segment, MaskStreamOptions options)
-    : segment_(std::move(segment)), options_(options) {
+MaskStream::MaskStream(Segment segment, MaskStreamOptions options,
+                       std::shared_ptr<MaskPropagator> propagator)
+    : segment_(std::move(segment)),
+      options_(options),
+      propagator_(propagator ? std::move(propagator) : std::make_shared<MaskPropagator>()) {
   if (options_.interval < 1) options_.interval = 1;
   if (!options_.synchronous) thread_ = std::thread([this] { work(); });
 }
@@ -81,7 +84,7 @@ void MaskStream::submit(SegmentationJob job) {
 
 SemanticMasks MaskStream::masksFor(std::uint64_t frame_id, const cv::Mat& bgr, const cv::Mat& depth,
                                    const cv::Mat& known_dynamic) {
-  propagator_.addFrame(frame_id, bgr);
+  propagator_->addFrame(frame_id, bgr);
   SegmentationJob job{previous_, StreamFrame{frame_id, bgr, depth}, known_dynamic};
   if (options_.synchronous) {
     segmentSynchronously(job);
@@ -138,8 +141,8 @@ SemanticMasks MaskStream::carryLatest(std::uint64_t frame_id, cv::Size size) {
   if (!carried_ || carried_->source_id != latest_->frame_id) {
     carried_ = Carried{latest_->frame_id, latest_->frame_id, latest_->masks};
   }
-  SemanticMasks masks{propagator_.propagate(carried_->masks.labels, carried_->frame_id),
-                      propagator_.propagate(carried_->masks.dynamic, carried_->frame_id)};
+  SemanticMasks masks{propagator_->propagate(carried_->masks.labels, carried_->frame_id),
+                      propagator_->propagate(carried_->masks.dynamic, carried_->frame_id)};
   if (masks.labels.empty()) masks.labels = cv::Mat::zeros(size, CV_8UC1);
   if (masks.dynamic.empty()) masks.dynamic = cv::Mat::zeros(size, CV_8UC1);
   carried_->frame_id = frame_id;

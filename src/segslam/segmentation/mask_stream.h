@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -70,7 +71,11 @@ struct LateOutput {
 // never starts on people.
 class MaskStream {
  public:
-  MaskStream(Segment segment, MaskStreamOptions options = {});
+  // `propagator`: optical flow shared with other streams over the same frames (fused masks
+  // carry two segmenters' outputs by the same flow, computed once per frame); null gives the
+  // stream its own.
+  MaskStream(Segment segment, MaskStreamOptions options = {},
+             std::shared_ptr<MaskPropagator> propagator = nullptr);
   ~MaskStream();
   MaskStream(const MaskStream&) = delete;
   MaskStream& operator=(const MaskStream&) = delete;
@@ -114,7 +119,7 @@ class MaskStream {
 
   Segment segment_;
   MaskStreamOptions options_;
-  MaskPropagator propagator_;
+  std::shared_ptr<MaskPropagator> propagator_;
   StreamFrame previous_;          // the caller's last frame
   std::optional<Result> latest_;  // newest output, on the caller's side
   std::optional<Carried> carried_;

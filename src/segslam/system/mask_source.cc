@@ -98,17 +98,18 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
     util::failAt(dataset.folder() / "mask.txt",
                  "oracle masks requested (--seg oracle) but the dataset has no mask.txt");
   }
+  const auto flow = std::make_shared<segmentation::MaskPropagator>();
   if (usesNetwork(source_)) {
     const auto config = segmentation::readModelConfig(options.model_config);
     semantic_ = std::make_unique<segmentation::MaskStream>(
         semanticSegment(options, config),
-        streamOptions(synchronous, options.network_interval, options.network_latency, true));
+        streamOptions(synchronous, options.network_interval, options.network_latency, true), flow);
     semantic_classes_.emplace(config.classes);
   }
   if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
     geometric_ = std::make_unique<segmentation::MaskStream>(
         geometricSegment(dataset.camera(), options.geometric),
-        streamOptions(synchronous, kGeometricInterval, 0, false));
+        streamOptions(synchronous, kGeometricInterval, 0, false), flow);
   }
 }
 

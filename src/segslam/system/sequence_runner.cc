@@ -8,6 +8,8 @@
 #include <chrono>
 #include <fstream>
 #include <opencv2/core/utility.hpp>
+#include <optional>
+#include <thread>
 
 #include "segslam/eval/closest_index.h"
 #include "segslam/eval/evaluation_plots.h"
@@ -122,6 +124,31 @@ void checkLoops(const io::TumDataset& dataset, SequenceRunSummary& summary) {
   }
 }
 
+// Paces a loop over frames to their timestamps: wait() returns when the frame would have arrived
+// from a camera started with the first frame, and how late that call came (ms, 0 when early).
+class RealtimePacer {
+ public:
+  double wait(double timestamp) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!first_timestamp_) {
+      first_timestamp_ = timestamp;
+      start_ = now;
+      return 0.0;
+    }
+    const auto arrival = start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(timestamp - *first_timestamp_));
+    if (now < arrival) {
+      std::this_thread::sleep_until(arrival);
+      return 0.0;
+    }
+    return std::chrono::duration<double, std::milli>(now - arrival).count();
+  }
+
+ private:
+  std::optional<double> first_timestamp_;
+  std::chrono::steady_clock::time_point start_;
+};
+
 }  // namespace
 
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
@@ -133,6 +160,8 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   SequenceRunSummary summary;
   summary.frames = std::min(options.max_frames, dataset.size());
   std::vector<FrameStats> stats;
+  std::vector<double> realtime_lag_ms;
+  RealtimePacer pacer;
   {
     FrameMaskSource masks(dataset, options.masks, options.slam.deterministic);
     SlamSystem slam(dataset.camera(), options.slam);
@@ -144,6 +173,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     }
     for (std::size_t i = 0; i < summary.frames; ++i) {
       const io::RgbdFrame frame = dataset.loadFrame(i);
+      if (options.realtime) realtime_lag_ms.push_back(pacer.wait(frame.timestamp));
       const auto mask_start = std::chrono::steady_clock::now();
       const FrameMasks frame_masks = masks.masks(frame, i);
       const double mask_ms = util::millisecondsSince(mask_start);
@@ -195,6 +225,8 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   }
   summary.tracking = summarise(tracking_ms);
   summary.extraction = summarise(extraction_ms);
+  summary.realtime = options.realtime;
+  summary.realtime_lag = summarise(realtime_lag_ms);
   summary.frames_per_second = summary.frames / std::max(summary.wall_seconds, 1e-9);
   summary.peak_rss_mb = peakRssMegabytes();
   writeFrameLog(out_dir / "frame_log.csv", stats);
@@ -248,6 +280,7 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
                          {"frames_per_second", summary.frames_per_second},
                          {"bundle_adjustment_seconds", summary.bundle_adjustment_seconds},
                          {"peak_rss_mb", summary.peak_rss_mb}};
+  if (summary.realtime) json["realtime_lag"] = timingJson(summary.realtime_lag);
   if (summary.loop_closing) json["loop_closing"] = loopClosingJson(summary);
   if (summary.network_runs > 0) {
     json["network_runs"] = summary.network_runs;

@@ -26,6 +26,10 @@ struct SequenceRunOptions {
   // Dense map of the keyframes (map/ in the run folder); its mask dilation is the SLAM one.
   bool build_map = true;
   dense::MapBuilderOptions map;
+  // Frames are handed to SLAM no earlier than a camera would deliver them (the dataset's
+  // timestamps, from the first frame on) instead of as fast as they load: the timing a robot
+  // sees, where the segmentation network has the frame interval to keep up.
+  bool realtime = false;
 };
 
 struct TimingSummary {
@@ -45,6 +49,9 @@ struct SequenceRunSummary {
   TimingSummary extraction;
   double wall_seconds = 0.0;       // frame loading included
   double frames_per_second = 0.0;  // end to end
+  // Realtime playback: how far the processing of a frame started after the frame's arrival.
+  bool realtime = false;
+  TimingSummary realtime_lag;
   double bundle_adjustment_seconds = 0.0;
   long peak_rss_mb = 0;
   int network_runs = 0;  // semantic masks: frames the network actually ran on

@@ -77,6 +77,26 @@ TEST(SequenceRunner, DeterministicModeRepeatsItself) {
   EXPECT_DOUBLE_EQ(ateRmse(first), ateRmse(second));
 }
 
+// Frames are handed over no earlier than their timestamps say, so the run lasts at least as long
+// as the sequence; what is measured is how late each frame was taken up.
+TEST(SequenceRunner, RealtimePlaybackKeepsToTheSequencesTimestamps) {
+  const ScopedTempDir dir;
+  synth::SynthOptions synth_options = syntheticSequence(0);
+  synth_options.frames = 45;
+  synth::generateSequence(synth_options, dir.path() / "sequence");
+  const auto dataset = io::TumDataset::open(dir.path() / "sequence");
+  SequenceRunOptions options;
+  options.realtime = true;
+  options.build_map = false;
+  const auto summary = runSequence(dataset, options, dir.path() / "run", [](const FrameStats&) {});
+  const double duration = dataset.frames().back().timestamp - dataset.frames().front().timestamp;
+  EXPECT_GT(duration, 0.5);
+  EXPECT_GE(summary.wall_seconds, duration);
+  EXPECT_TRUE(summary.realtime);
+  EXPECT_EQ(summary.tracked_frames, 45u);
+  EXPECT_GE(summary.realtime_lag.max_ms, 0.0);
+}
+
 TEST(SequenceRunner, RealStaticSequence) {
   SEGSLAM_REQUIRE_SHARED(dataset, "tum_fr1_xyz_300");
   const ScopedTempDir dir;

@@ -58,5 +58,33 @@ TEST(LateMaskCheck, TheFramesPoseIsUsed) {
                   .empty());
 }
 
+// 50 points over the view: every fifth on the person (left half), the others on the wall.
+std::vector<std::shared_ptr<map::MapPoint>> pointsOverTheView(const PersonScene& scene) {
+  std::vector<std::shared_ptr<map::MapPoint>> points;
+  for (int i = 0; i < 50; ++i) {
+    const bool on_person = i % 5 == 0;
+    const double z = on_person ? 1.5 : 3.0;
+    const double u =
+        on_person ? 0.1 * scene.camera.width + (i % 10) : 0.55 * scene.camera.width + i;
+    const double v = 0.2 * scene.camera.height + 2 * i;
+    points.push_back(mapPointAt((u - scene.camera.cx) * z / scene.camera.fx,
+                                (v - scene.camera.cy) * z / scene.camera.fy, z));
+  }
+  return points;
+}
+
+TEST(LateMaskCheck, AMaskOverMostOfTheSurfaceIsASegmentationFailureAndCullsNothing) {
+  PersonScene scene;
+  const auto points = pointsOverTheView(scene);
+  EXPECT_EQ(pointsOnDynamicSurface(points, geometry::Pose::Identity(), scene.frame_camera,
+                                   scene.mask, scene.depth)
+                .size(),
+            10u);
+  scene.mask.setTo(255);  // the whole frame "moves": wall points would go as well
+  EXPECT_TRUE(pointsOnDynamicSurface(points, geometry::Pose::Identity(), scene.frame_camera,
+                                     scene.mask, scene.depth)
+                  .empty());
+}
+
 }  // namespace
 }  // namespace segslam::tracking

@@ -302,7 +302,10 @@ int Tracker::cullPointsOnLateMask(std::uint64_t frame_id, const cv::Mat& dynamic
 
 void Tracker::cullPointsSeenThrough() {
   if (options_.seen_through_frames_to_cull <= 0) return;
-  for (const auto& point : pointsSeenThrough(local_points_, current_, options_.free_space)) {
+  const auto seen_through = pointsSeenThrough(local_points_, current_, options_.free_space);
+  spdlog::debug("frame {}: {} of {} local points seen through, {} inliers", current_.id,
+                seen_through.size(), local_points_.size(), inliers_);
+  for (const auto& point : seen_through) {
     if (++point->seen_through >= options_.seen_through_frames_to_cull) point->setBad();
   }
 }
