@@ -73,8 +73,8 @@ int run(int argc, char** argv) {
 
   std::vector<double> wall_ms;
   std::vector<double> cpu_ms;
-  // What the stream's two steps each add: the segmenter's last mask as it is, and moved by
-  // optical flow alone (before the depth snapping).
+  // What the stream's two steps each add: the segmenter's last mask as it is, and its objects
+  // moved by optical flow alone (before the depth snapping).
   segslam::segmentation::MaskPropagator flow_only;
   std::vector<double> iou;
   std::vector<double> stale_iou;
@@ -91,7 +91,7 @@ int run(int argc, char** argv) {
       iou.push_back(segslam::eval::compareMasks(masks.dynamic, frames[i].mask).iou());
       stale_iou.push_back(segslam::eval::compareMasks(frames[source].mask, frames[i].mask).iou());
       flow_iou.push_back(segslam::eval::compareMasks(
-                             flow_only.propagate(frames[source].mask, source), frames[i].mask)
+                             flow_only.moveObjects(frames[source].mask, source), frames[i].mask)
                              .iou());
     }
   }

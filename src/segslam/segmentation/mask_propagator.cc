@@ -1,7 +1,9 @@
 #include "segslam/segmentation/mask_propagator.h"
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
+#include <vector>
 
 namespace segslam::segmentation {
 
@@ -51,18 +53,80 @@ void MaskPropagator::addFrame(std::uint64_t frame_id, const cv::Mat& image) {
   has_frame_ = true;
 }
 
-cv::Mat MaskPropagator::propagate(const cv::Mat& labels, std::uint64_t source_id) const {
-  if (!has_frame_ || source_id > newest_id_) return {};
-  if (source_id == newest_id_) return labels.clone();
+std::optional<std::deque<MaskPropagator::Step>::const_iterator> MaskPropagator::stepsFrom(
+    std::uint64_t source_id) const {
+  if (!has_frame_ || source_id > newest_id_) return std::nullopt;
+  if (source_id == newest_id_) return steps_.end();
   auto first = steps_.begin();
   while (first != steps_.end() && first->from_id != source_id) ++first;
-  if (first == steps_.end()) return {};
+  if (first == steps_.end()) return std::nullopt;
+  return first;
+}
+
+cv::Mat MaskPropagator::propagate(const cv::Mat& labels, std::uint64_t source_id) const {
+  const auto first = stepsFrom(source_id);
+  if (!first) return {};
+  if (*first == steps_.end()) return labels.clone();
   cv::Mat current = labels;
-  for (auto it = first; it != steps_.end(); ++it) {
+  for (auto it = *first; it != steps_.end(); ++it) {
     cv::Mat next;
     cv::remap(current, next, it->map_x, it->map_y, cv::INTER_NEAREST, cv::BORDER_CONSTANT,
               cv::Scalar(0));
     current = next;
+  }
+  return current;
+}
+
+namespace {
+
+float median(std::vector<float>& values) {
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+// One step of moveObjects: map_x/map_y say where each pixel of the new frame was in the old one,
+// so an object moves by minus the median of that offset over its pixels.
+cv::Mat moveEachObject(const cv::Mat& mask, const cv::Mat& map_x, const cv::Mat& map_y) {
+  cv::Mat objects;
+  cv::Mat stats;
+  cv::Mat centroids;
+  const int count = cv::connectedComponentsWithStats(mask != 0, objects, stats, centroids, 8);
+  std::vector<std::vector<float>> dx(count);
+  std::vector<std::vector<float>> dy(count);
+  for (int y = 0; y < mask.rows; ++y) {
+    const auto* object = objects.ptr<int>(y);
+    const auto* mx = map_x.ptr<float>(y);
+    const auto* my = map_y.ptr<float>(y);
+    for (int x = 0; x < mask.cols; ++x) {
+      if (object[x] == 0) continue;
+      dx[object[x]].push_back(mx[x] - static_cast<float>(x));
+      dy[object[x]].push_back(my[x] - static_cast<float>(y));
+    }
+  }
+  cv::Mat moved = cv::Mat::zeros(mask.size(), mask.type());
+  const cv::Rect image(0, 0, mask.cols, mask.rows);
+  for (int id = 1; id < count; ++id) {
+    const cv::Point shift(-cvRound(median(dx[id])), -cvRound(median(dy[id])));
+    const cv::Rect box(stats.at<int>(id, cv::CC_STAT_LEFT), stats.at<int>(id, cv::CC_STAT_TOP),
+                       stats.at<int>(id, cv::CC_STAT_WIDTH), stats.at<int>(id, cv::CC_STAT_HEIGHT));
+    const cv::Rect target = (box + shift) & image;
+    if (target.empty()) continue;
+    const cv::Rect source = target - shift;
+    mask(source).copyTo(moved(target), objects(source) == id);
+  }
+  return moved;
+}
+
+}  // namespace
+
+cv::Mat MaskPropagator::moveObjects(const cv::Mat& mask, std::uint64_t source_id) const {
+  const auto first = stepsFrom(source_id);
+  if (!first) return {};
+  if (*first == steps_.end()) return mask.clone();
+  cv::Mat current = mask;
+  for (auto it = *first; it != steps_.end(); ++it) {
+    current = moveEachObject(current, it->map_x, it->map_y);
   }
   return current;
 }

@@ -4,6 +4,7 @@
 #include <deque>
 #include <opencv2/core.hpp>
 #include <opencv2/video/tracking.hpp>
+#include <optional>
 
 namespace segslam::segmentation {
 
@@ -23,6 +24,13 @@ class MaskPropagator {
   // source frame is older than the history or was never added.
   [[nodiscard]] cv::Mat propagate(const cv::Mat& labels, std::uint64_t source_id) const;
 
+  // `mask` (CV_8UC1, computed on frame `source_id`) as seen in the newest frame, each 8-connected
+  // object moved whole, frame by frame, by the median flow over it. Pixel-wise remapping smears an
+  // object along the flow's motion boundaries, where the coarse flow drags the background along
+  // with a walking person; moved whole, an object keeps its shape and size (walker, masks carried
+  // 7 frames: IoU 0.54 against 0.50). Empty as for propagate().
+  [[nodiscard]] cv::Mat moveObjects(const cv::Mat& mask, std::uint64_t source_id) const;
+
   [[nodiscard]] std::uint64_t newestFrame() const { return newest_id_; }
 
  private:
@@ -31,6 +39,11 @@ class MaskPropagator {
     cv::Mat map_x;          // for each pixel of the next frame: where it was in from_id
     cv::Mat map_y;
   };
+
+  // The steps from `source_id` to the newest frame: their first, or steps_.end() when
+  // source_id is the newest frame; nullopt when it is unknown.
+  [[nodiscard]] std::optional<std::deque<Step>::const_iterator> stepsFrom(
+      std::uint64_t source_id) const;
 
   int history_;
   double flow_scale_;

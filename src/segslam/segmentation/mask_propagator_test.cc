@@ -63,6 +63,33 @@ TEST(MaskPropagator, AddingTheNewestFrameAgainKeepsItsFlow) {
   EXPECT_LT(iou(carried == 5, labels == 5), 0.9);  // it moved
 }
 
+// Two textured squares over a still textured background, one moving right, one moving up: each
+// object is moved whole by its own motion and keeps its size.
+TEST(MaskPropagator, ObjectsMoveWholeEachByItsOwnMotion) {
+  const cv::Mat background = texture({640, 480});
+  const cv::Mat pattern = texture({120, 120}) / 2 + 128;
+  const cv::Rect right(100, 100, 120, 120);
+  const cv::Rect up(400, 300, 120, 120);
+  MaskPropagator propagator;
+  for (int frame = 0; frame <= 4; ++frame) {
+    cv::Mat image = background.clone();
+    pattern.copyTo(image(right + cv::Point(5 * frame, 0)));
+    pattern.copyTo(image(up + cv::Point(0, -4 * frame)));
+    propagator.addFrame(frame, image);
+  }
+  cv::Mat mask = cv::Mat::zeros(background.size(), CV_8UC1);
+  mask(right).setTo(255);
+  mask(up).setTo(255);
+  const cv::Mat moved = propagator.moveObjects(mask, 0);
+  ASSERT_EQ(moved.size(), mask.size());
+  cv::Mat expected = cv::Mat::zeros(background.size(), CV_8UC1);
+  expected(right + cv::Point(20, 0)).setTo(255);
+  expected(up + cv::Point(0, -16)).setTo(255);
+  EXPECT_GT(iou(moved, expected), 0.8);
+  EXPECT_EQ(cv::countNonZero(moved), cv::countNonZero(mask));
+  EXPECT_TRUE(propagator.moveObjects(mask, 9).empty());
+}
+
 TEST(MaskPropagator, NewestFrameIsReturnedAsIsAndUnknownSourcesGiveNothing) {
   const cv::Mat base = texture({160, 120});
   MaskPropagator propagator(/*history=*/2);

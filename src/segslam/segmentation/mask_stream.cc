@@ -142,7 +142,7 @@ SemanticMasks MaskStream::carryLatest(std::uint64_t frame_id, cv::Size size) {
     carried_ = Carried{latest_->frame_id, latest_->frame_id, latest_->masks};
   }
   SemanticMasks masks{propagator_->propagate(carried_->masks.labels, carried_->frame_id),
-                      propagator_->propagate(carried_->masks.dynamic, carried_->frame_id)};
+                      propagator_->moveObjects(carried_->masks.dynamic, carried_->frame_id)};
   if (masks.labels.empty()) masks.labels = cv::Mat::zeros(size, CV_8UC1);
   if (masks.dynamic.empty()) masks.dynamic = cv::Mat::zeros(size, CV_8UC1);
   carried_->frame_id = frame_id;
