@@ -4,6 +4,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "segslam/util/median.h"
+
 namespace segslam::segmentation {
 
 namespace {
@@ -50,12 +52,6 @@ int fillRegions(const cv::Mat& interior, const cv::Mat& depth, cv::Mat& blocker,
   return next_value;
 }
 
-float median(std::vector<float>& values) {
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
 bool nearAnyDepth(float depth, const std::vector<float>& object_depths, double tolerance) {
   return std::any_of(object_depths.begin(), object_depths.end(),
                      [&](float object) { return std::abs(depth - object) <= tolerance * object; });
@@ -83,8 +79,8 @@ cv::Mat objectRegions(const cv::Mat& mask, const cv::Mat& regions, const cv::Mat
   for (int value = 2; value < num_values; ++value) {
     const auto area = static_cast<int>(depths[value].size());
     if (area == 0 || 2 * inside[value] < area) continue;
-    if (!object_depths.empty() &&
-        !nearAnyDepth(median(depths[value]), object_depths, options.object_depth_tolerance)) {
+    if (!object_depths.empty() && !nearAnyDepth(util::medianInPlace(depths[value]), object_depths,
+                                                options.object_depth_tolerance)) {
       continue;
     }
     kept_values.at<std::uint8_t>(value) = 255;
@@ -146,7 +142,7 @@ std::vector<float> objectDepths(const cv::Mat& mask, const cv::Mat& depth,
   std::vector<float> medians;
   for (auto& values : depths) {
     if (static_cast<int>(values.size()) >= options.min_object_area_px) {
-      medians.push_back(median(values));
+      medians.push_back(util::medianInPlace(values));
     }
   }
   return medians;

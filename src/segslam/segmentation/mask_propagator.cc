@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "segslam/util/median.h"
+
 namespace segslam::segmentation {
 
 MaskPropagator::MaskPropagator(int history, double flow_scale)
@@ -79,12 +81,6 @@ cv::Mat MaskPropagator::propagate(const cv::Mat& labels, std::uint64_t source_id
 
 namespace {
 
-float median(std::vector<float>& values) {
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
 // One step of moveObjects: map_x/map_y say where each pixel of the new frame was in the old one,
 // so an object moves by minus the median of that offset over its pixels (every other pixel of
 // every other row: the flow is smooth at that scale, and the median costs a quarter).
@@ -109,9 +105,9 @@ cv::Mat moveEachObject(const cv::Mat& mask, const cv::Mat& map_x, const cv::Mat&
   cv::Mat moved = cv::Mat::zeros(mask.size(), mask.type());
   const cv::Rect image(0, 0, mask.cols, mask.rows);
   for (int id = 1; id < count; ++id) {
-    const cv::Point shift = dx[id].empty()
-                                ? cv::Point()
-                                : cv::Point(-cvRound(median(dx[id])), -cvRound(median(dy[id])));
+    const cv::Point shift = dx[id].empty() ? cv::Point()
+                                           : cv::Point(-cvRound(util::medianInPlace(dx[id])),
+                                                       -cvRound(util::medianInPlace(dy[id])));
     const cv::Rect box(stats.at<int>(id, cv::CC_STAT_LEFT), stats.at<int>(id, cv::CC_STAT_TOP),
                        stats.at<int>(id, cv::CC_STAT_WIDTH), stats.at<int>(id, cv::CC_STAT_HEIGHT));
     const cv::Rect target = (box + shift) & image;
