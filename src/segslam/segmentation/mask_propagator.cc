@@ -123,7 +123,8 @@ cv::Mat moveEachObject(const cv::Mat& mask, const cv::Mat& map_x, const cv::Mat&
 cv::Mat MaskPropagator::moveObjects(const cv::Mat& mask, std::uint64_t source_id) const {
   const auto first = stepsFrom(source_id);
   if (!first) return {};
-  if (*first == steps_.end()) return mask.clone();
+  // Most frames show nobody: nothing to move, no components to label at every step.
+  if (*first == steps_.end() || cv::countNonZero(mask) == 0) return mask.clone();
   cv::Mat current = mask;
   for (auto it = *first; it != steps_.end(); ++it) {
     current = moveEachObject(current, it->map_x, it->map_y);
