@@ -140,10 +140,11 @@ cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame
   }
   tracks.previous_depth = previous.depth;
   tracks.current_depth = current.depth;
-  const auto seeds = options_.motion_model == CameraMotionModel::kRigid ? rigidMotionSeeds(tracks)
-                                                                        : homographySeeds(tracks);
-  if (!seeds) return {};
-  cv::Mat dynamic = growObjects(current.depth, *seeds);
+  const auto evidence = options_.motion_model == CameraMotionModel::kRigid
+                            ? rigidMotionEvidence(tracks)
+                            : homographyEvidence(tracks);
+  if (!evidence) return {};
+  cv::Mat dynamic = growObjects(current.depth, *evidence);
   if (cv::countNonZero(dynamic) >
       options_.max_moving_share * static_cast<double>(dynamic.total())) {
     return {};
@@ -151,7 +152,7 @@ cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame
   return dynamic;
 }
 
-std::optional<std::vector<cv::Point>> GeometricSegmenter::rigidMotionSeeds(
+std::optional<GeometricSegmenter::MotionEvidence> GeometricSegmenter::rigidMotionEvidence(
     const Correspondences& tracks) const {
   // 3D points of the previous frame with their current pixels; static candidates for the pose.
   std::vector<cv::Point3f> points;
@@ -187,7 +188,7 @@ std::optional<std::vector<cv::Point>> GeometricSegmenter::rigidMotionSeeds(
   cv::projectPoints(points, rvec, tvec, k, cv::noArray(), predicted);
   cv::Mat rotation;
   cv::Rodrigues(rvec, rotation);
-  std::vector<cv::Point> seeds;
+  MotionEvidence evidence;
   for (std::size_t j = 0; j < points.size(); ++j) {
     const cv::Mat p = rotation * cv::Mat(cv::Vec3d(points[j].x, points[j].y, points[j].z)) + tvec;
     const double z_predicted = p.at<double>(2);
@@ -196,12 +197,12 @@ std::optional<std::vector<cv::Point>> GeometricSegmenter::rigidMotionSeeds(
     const bool image_motion = cv::norm(predicted[j] - pixels[j]) > options_.reprojection_px;
     const bool depth_motion = z_observed > 0.0f && std::abs(z_predicted - z_observed) >
                                                        options_.depth_tolerance * z_observed;
-    if (image_motion || depth_motion) seeds.push_back(corner);
+    (image_motion || depth_motion ? evidence.moving : evidence.explained).push_back(corner);
   }
-  return seeds;
+  return evidence;
 }
 
-std::optional<std::vector<cv::Point>> GeometricSegmenter::homographySeeds(
+std::optional<GeometricSegmenter::MotionEvidence> GeometricSegmenter::homographyEvidence(
     const Correspondences& tracks) const {
   std::vector<cv::Point2f> static_previous;
   std::vector<cv::Point2f> static_current;
@@ -218,22 +219,31 @@ std::optional<std::vector<cv::Point>> GeometricSegmenter::homographySeeds(
   if (homography.empty()) return std::nullopt;
   std::vector<cv::Point2f> predicted;
   cv::perspectiveTransform(tracks.previous_un, predicted, homography);
-  std::vector<cv::Point> seeds;
+  MotionEvidence evidence;
   for (std::size_t i = 0; i < predicted.size(); ++i) {
-    if (cv::norm(predicted[i] - tracks.current_un[i]) > options_.reprojection_px) {
-      seeds.push_back(tracks.current_raw[i]);
-    }
+    const bool moving = cv::norm(predicted[i] - tracks.current_un[i]) > options_.reprojection_px;
+    (moving ? evidence.moving : evidence.explained).push_back(tracks.current_raw[i]);
   }
-  return seeds;
+  return evidence;
 }
 
+namespace {
+
+int countInside(const cv::Mat& region, const std::vector<cv::Point>& corners) {
+  int inside = 0;
+  for (const cv::Point& corner : corners) inside += region.at<std::uint8_t>(corner) != 0;
+  return inside;
+}
+
+}  // namespace
+
 cv::Mat GeometricSegmenter::growObjects(const cv::Mat& depth,
-                                        const std::vector<cv::Point>& seeds) const {
+                                        const MotionEvidence& evidence) const {
   cv::Mat dynamic = cv::Mat::zeros(depth.size(), CV_8UC1);
   cv::Mat visited = cv::Mat::zeros(depth.size(), CV_8UC1);
   const double max_area = options_.max_object_share * static_cast<double>(depth.total());
   cv::Mat depth_copy = depth.clone();
-  for (const cv::Point& seed : seeds) {
+  for (const cv::Point& seed : evidence.moving) {
     if (visited.at<std::uint8_t>(seed) != 0) continue;
     const float z = depth.at<float>(seed);
     if (z <= 0.0f) continue;
@@ -245,9 +255,12 @@ cv::Mat GeometricSegmenter::growObjects(const cv::Mat& depth,
     const cv::Mat inside = region(cv::Rect(1, 1, depth.cols, depth.rows));
     visited.setTo(255, inside);
     if (area > max_area) continue;
-    int seeds_inside = 0;
-    for (const cv::Point& other : seeds) seeds_inside += inside.at<std::uint8_t>(other) != 0;
-    if (seeds_inside >= options_.min_seeds_per_object) dynamic.setTo(255, inside);
+    const int seeds_inside = countInside(inside, evidence.moving);
+    const int explained_inside = countInside(inside, evidence.explained);
+    const bool enough_seeds = seeds_inside >= options_.min_seeds_per_object;
+    const bool mostly_moving =
+        seeds_inside >= options_.min_seed_share * (seeds_inside + explained_inside);
+    if (enough_seeds && mostly_moving) dynamic.setTo(255, inside);
   }
   return dynamic;
 }

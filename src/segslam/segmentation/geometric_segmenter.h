@@ -24,6 +24,9 @@ struct GeometricOptions {
   double depth_tolerance = 0.1;        // relative depth disagreement that also counts as motion
   double region_depth_range_m = 0.25;  // objects grown from seeds: depth within this of the seed
   int min_seeds_per_object = 5;        // fewer moving corners in a region: noise, not an object
+  // A region whose tracked corners the camera motion mostly explains is background, whatever a
+  // few corners on it say (occlusion edges, aliasing): moving corners must be at least this share.
+  double min_seed_share = 0.5;
   double max_object_share = 0.4;       // a region larger than this share of the image is background
   // When more than this share of the image seems to move, the camera motion was misestimated:
   // nothing can be told about the frame.
@@ -54,13 +57,19 @@ class GeometricSegmenter {
 
  private:
   struct Correspondences;
-  [[nodiscard]] std::optional<std::vector<cv::Point>> rigidMotionSeeds(
+  // Tracked corners of the current frame: those the camera motion does not explain (seeds of
+  // moving objects) and those it does.
+  struct MotionEvidence {
+    std::vector<cv::Point> moving;
+    std::vector<cv::Point> explained;
+  };
+  [[nodiscard]] std::optional<MotionEvidence> rigidMotionEvidence(
       const Correspondences& tracks) const;
-  [[nodiscard]] std::optional<std::vector<cv::Point>> homographySeeds(
+  [[nodiscard]] std::optional<MotionEvidence> homographyEvidence(
       const Correspondences& tracks) const;
-  // The union of the connected regions of similar depth around the seeds that hold enough seeds.
-  [[nodiscard]] cv::Mat growObjects(const cv::Mat& depth,
-                                    const std::vector<cv::Point>& seeds) const;
+  // The union of the connected regions of similar depth around the moving corners that hold
+  // enough of them, and more of them than of explained corners.
+  [[nodiscard]] cv::Mat growObjects(const cv::Mat& depth, const MotionEvidence& evidence) const;
 
   core::Camera camera_;
   GeometricOptions options_;
