@@ -129,6 +129,9 @@ void run(EvalLoopsOptions& options) {
     banks.push_back(std::make_shared<place::CnnFeatureBank>(
         place::CnnFeatureExtractor(backbone, backbone_model)));
     auto methods = place::makeCnnPlaceMethods(banks.back());
+    methods.insert(methods.begin(), std::make_unique<place::BowPlaceMethod>(
+                                        vocabulary, feature::OrbExtractorOptions{},
+                                        place::BowMasking::kOwnStaticArea));
     methods.insert(methods.begin(), std::make_unique<place::BowPlaceMethod>(vocabulary));
     return methods;
   };
@@ -139,7 +142,12 @@ void run(EvalLoopsOptions& options) {
   const auto evaluation =
       system::evaluateLoops(dataset, options.evaluation, make_methods, [&] { progress.advance(); });
   progress.finish();
-  const auto notes = cnnNotes(banks, backbone_model);
+  auto notes = cnnNotes(banks, backbone_model);
+  notes.insert(notes.begin(),
+               "bow: ORB on the whole image; with masks, both vectors keep only the keypoints on "
+               "pixels static in both images (the union mask). bow:static: with masks, each "
+               "image's ORB keypoints are extracted on its own static area and the other image's "
+               "mask removes nothing (the union-mask columns are then each image's own mask)");
   system::writeLoopReport(options.out_dir, evaluation, notes);
   fmt::print("\n{}\noutputs: {}\n", system::loopTableMarkdown(evaluation, notes),
              std::filesystem::absolute(options.out_dir).string());

@@ -18,47 +18,16 @@ BowLoopDetector::BowLoopDetector(std::shared_ptr<const place::Vocabulary> vocabu
 BowLoopDetector::Entry BowLoopDetector::entryOf(const map::KeyFrame& keyframe) const {
   Entry entry;
   entry.keyframe = &keyframe;
-  // A mask without a dynamic pixel changes no score and would cost a full image per keyframe.
-  if (!keyframe.dynamic_mask.empty() && cv::countNonZero(keyframe.dynamic_mask) > 0) {
-    entry.dynamic_mask = keyframe.dynamic_mask;
-  }
-  for (std::size_t i = 0; i < keyframe.keypoints.size(); ++i) {
-    const cv::Point2f& pixel = keyframe.keypoints[i].pt;
-    if (feature::isDynamicAt(entry.dynamic_mask, pixel)) continue;
-    entry.words.push_back(
-        vocabulary_->wordOf(keyframe.descriptors.ptr<std::uint8_t>(static_cast<int>(i))));
-    entry.pixels.push_back(pixel);
-  }
-  std::vector<std::size_t> all(entry.words.size());
-  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
-  entry.bow = wordsOf(entry, all);
-  return entry;
-}
-
-place::BowVector BowLoopDetector::wordsOf(const Entry& entry,
-                                          const std::vector<std::size_t>& kept) const {
   // Term frequency times IDF, as Vocabulary::transform weighs them.
-  place::BowVector bow;
-  for (const std::size_t k : kept) {
-    const float idf = vocabulary_->idf(entry.words[k]);
-    if (idf > 0.0F) bow[entry.words[k]] += idf;
+  for (std::size_t i = 0; i < keyframe.keypoints.size(); ++i) {
+    if (feature::isDynamicAt(keyframe.dynamic_mask, keyframe.keypoints[i].pt)) continue;
+    const place::WordId word =
+        vocabulary_->wordOf(keyframe.descriptors.ptr<std::uint8_t>(static_cast<int>(i)));
+    const float idf = vocabulary_->idf(word);
+    if (idf > 0.0F) entry.bow[word] += idf;
   }
-  place::normaliseL1(bow);
-  return bow;
-}
-
-std::vector<std::size_t> BowLoopDetector::keypointsStaticIn(const Entry& a, const Entry& b) {
-  std::vector<std::size_t> kept;
-  kept.reserve(a.pixels.size());
-  for (std::size_t k = 0; k < a.pixels.size(); ++k) {
-    if (!feature::isDynamicAt(b.dynamic_mask, a.pixels[k])) kept.push_back(k);
-  }
-  return kept;
-}
-
-double BowLoopDetector::unionMaskScore(const Entry& a, const Entry& b) const {
-  if (a.dynamic_mask.empty() && b.dynamic_mask.empty()) return place::l1Score(a.bow, b.bow);
-  return place::l1Score(wordsOf(a, keypointsStaticIn(a, b)), wordsOf(b, keypointsStaticIn(b, a)));
+  place::normaliseL1(entry.bow);
+  return entry;
 }
 
 const BowLoopDetector::Entry* BowLoopDetector::find(std::uint64_t keyframe_id) const {
@@ -82,7 +51,7 @@ std::vector<std::uint64_t> BowLoopDetector::candidates(const map::KeyFrame& quer
       [&](std::uint64_t id) -> std::optional<double> {
         const Entry* neighbour = find(id);
         if (!neighbour) return std::nullopt;
-        return unionMaskScore(query_entry, *neighbour);
+        return place::l1Score(query_entry.bow, neighbour->bow);
       },
       options_.min_score);
 
@@ -92,9 +61,7 @@ std::vector<std::uint64_t> BowLoopDetector::candidates(const map::KeyFrame& quer
   });
   std::unordered_map<std::uint64_t, double> scores;
   for (const auto& hit : hits) {
-    const Entry& entry = entries_[hit.entry];
-    const double score = unionMaskScore(query_entry, entry);
-    if (score > threshold) scores[entry.keyframe->id] = score;
+    if (hit.score > threshold) scores[entries_[hit.entry].keyframe->id] = hit.score;
   }
   return bestCandidateGroups(
       scores, [&](std::uint64_t id) { return find(id)->keyframe; }, options_.groups,

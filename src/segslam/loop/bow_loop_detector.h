@@ -15,20 +15,21 @@
 namespace segslam::loop {
 
 struct BowLoopOptions {
-  std::size_t shortlist = 50;  // database hits (unmasked score) rescored with the union mask
-  double min_score = 0.05;     // union-mask score below which nothing is a candidate
+  std::size_t shortlist = 50;  // best database hits considered
+  double min_score = 0.05;     // score below which nothing is a candidate
   CandidateGroupOptions groups;
 };
 
-// Loop candidates by bag of words with the union mask (the "BoW + union mask"): every
-// keyframe's static ORB descriptors become words of the vocabulary in a BowDatabase. A query is
-// compared with the database through the inverted index, then the best hits are rescored over
-// the keypoints static in BOTH keyframes: the query's keypoints on the hit's dynamic mask and the
-// hit's keypoints on the query's mask are left out, so that neither keyframe's moving objects
-// take part. A hit must score higher than the lowest such score between the query and its
-// covisible keyframes (which truly see the same place: the score's scale differs from scene to
-// scene), and at least `min_score`; hits are then pooled by bestCandidateGroups. Keyframes are read
-// through pointers: they must outlive the detector (the map keeps even culled keyframes).
+// Loop candidates by bag of words with the dynamic masks: every keyframe's static ORB descriptors
+// (extracted on its static area, so the whole feature budget goes to what is static) become words
+// of the vocabulary in a BowDatabase, and a query is scored against the database through the
+// inverted index. The other keyframe's mask removes nothing: two views of one place are not
+// pixel-aligned, so the keypoints at the pixels of the other's moving object are as often seen by
+// the other as any (`segslam eval loops`: bow:static against bow's union of keypoints). A hit must
+// score higher than the lowest score between the query and its covisible keyframes (which truly
+// see the same place: the score's scale differs from scene to scene), and at least `min_score`;
+// hits are then pooled by bestCandidateGroups. Keyframes are read through pointers: they must
+// outlive the detector (the map keeps even culled keyframes).
 class BowLoopDetector : public LoopCandidateDetector {
  public:
   explicit BowLoopDetector(std::shared_ptr<const place::Vocabulary> vocabulary,
@@ -40,24 +41,16 @@ class BowLoopDetector : public LoopCandidateDetector {
                                                       const std::set<std::uint64_t>& covisible,
                                                       std::size_t max_candidates) const override;
 
-  // A keyframe's static keypoints with their words.
+  // A keyframe and the bag of words of its static keypoints.
   struct Entry {
     const map::KeyFrame* keyframe = nullptr;
-    std::vector<place::WordId> words;
-    std::vector<cv::Point2f> pixels;  // raw keypoint positions, for the other's mask
-    cv::Mat dynamic_mask;             // empty when nothing in the keyframe moves
-    place::BowVector bow;             // all static keypoints
+    place::BowVector bow;
   };
 
+  // Only the keypoints off the keyframe's own dynamic mask count.
   [[nodiscard]] Entry entryOf(const map::KeyFrame& keyframe) const;
-  // Indices of a's keypoints outside b's dynamic mask.
-  [[nodiscard]] static std::vector<std::size_t> keypointsStaticIn(const Entry& a, const Entry& b);
-  // l1Score of the two keyframes' words over the keypoints static in both.
-  [[nodiscard]] double unionMaskScore(const Entry& a, const Entry& b) const;
 
  private:
-  [[nodiscard]] place::BowVector wordsOf(const Entry& entry,
-                                         const std::vector<std::size_t>& kept) const;
   [[nodiscard]] const Entry* find(std::uint64_t keyframe_id) const;
 
   std::shared_ptr<const place::Vocabulary> vocabulary_;

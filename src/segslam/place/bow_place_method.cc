@@ -20,9 +20,13 @@ bool isStaticAt(const cv::Mat& static_mask, const cv::Point2f& point) {
 }  // namespace
 
 BowPlaceMethod::BowPlaceMethod(std::shared_ptr<const Vocabulary> vocabulary,
-                               const feature::OrbExtractorOptions& orb_options)
-    : vocabulary_(std::move(vocabulary)), extractor_(orb_options) {
+                               const feature::OrbExtractorOptions& orb_options, BowMasking masking)
+    : vocabulary_(std::move(vocabulary)), extractor_(orb_options), masking_(masking) {
   if (!vocabulary_) throw std::invalid_argument("BowPlaceMethod: no vocabulary");
+}
+
+std::string BowPlaceMethod::name() const {
+  return masking_ == BowMasking::kOwnStaticArea ? "bow:static" : "bow";
 }
 
 void BowPlaceMethod::add(const PlaceImage& image) {
@@ -42,6 +46,12 @@ void BowPlaceMethod::add(const PlaceImage& image) {
     words.static_mask = mask.clone();
   }
   words.bow = vocabulary_->transform(words.descriptors);
+  if (masking_ == BowMasking::kOwnStaticArea && !words.static_mask.empty()) {
+    std::vector<cv::KeyPoint> static_keypoints;
+    cv::Mat static_descriptors;
+    extractor_.extract(gray, 255 - words.static_mask, static_keypoints, static_descriptors);
+    words.static_bow = vocabulary_->transform(static_descriptors);
+  }
   images_.push_back(std::move(words));
 }
 
@@ -61,6 +71,10 @@ double BowPlaceMethod::similarity(std::size_t i, std::size_t j, bool union_mask)
   const ImageWords& b = images_.at(j);
   if (!union_mask || (a.static_mask.empty() && b.static_mask.empty())) {
     return l1Score(a.bow, b.bow);
+  }
+  if (masking_ == BowMasking::kOwnStaticArea) {
+    return l1Score(a.static_mask.empty() ? a.bow : a.static_bow,
+                   b.static_mask.empty() ? b.bow : b.static_bow);
   }
   return l1Score(staticWords(a, b), staticWords(b, a));
 }

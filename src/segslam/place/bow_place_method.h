@@ -12,21 +12,35 @@
 
 namespace segslam::place {
 
-// Bag-of-words place descriptor ("bow"): ORB on the whole image, words of our vocabulary tree,
-// l1Score. With the union mask, both images' vectors are rebuilt from the keypoints that lie on
-// pixels static in both images, so that neither image's moving objects take part.
+// How the bag of words uses the images' static masks when compared with masks.
+enum class BowMasking {
+  // "bow", the method's variant: ORB on the whole image; both images' vectors are rebuilt from
+  // the keypoints on pixels static in both images (the union mask).
+  kUnionOfKeypoints,
+  // "bow:static": each image's ORB keypoints are extracted on its own static area, so that the
+  // whole feature budget goes to what is static, and the two vectors are compared as they are.
+  // The other image's mask removes nothing: the views of a loop are not pixel-aligned (up to
+  // 0.3 m and 20 deg apart), so its moving objects hide other static words in this image than
+  // the ones at the same pixels, and dropping those costs loops more than other pairs.
+  kOwnStaticArea,
+};
+
+// Bag-of-words place descriptor: ORB, words of our vocabulary tree, l1Score. Without masks both
+// variants describe the whole image.
 class BowPlaceMethod : public PlaceDescriptorMethod {
  public:
   explicit BowPlaceMethod(std::shared_ptr<const Vocabulary> vocabulary,
-                          const feature::OrbExtractorOptions& orb_options = {});
+                          const feature::OrbExtractorOptions& orb_options = {},
+                          BowMasking masking = BowMasking::kUnionOfKeypoints);
 
-  [[nodiscard]] std::string name() const override { return "bow"; }
+  [[nodiscard]] std::string name() const override;
   // Throws std::invalid_argument for an empty image or a mask of another size or type.
   void add(const PlaceImage& image) override;
   [[nodiscard]] std::size_t size() const override { return images_.size(); }
   // Throws std::out_of_range for an index >= size().
   [[nodiscard]] double similarity(std::size_t i, std::size_t j, bool union_mask) const override;
 
+  // The whole image's vector.
   [[nodiscard]] const BowVector& bowVector(std::size_t i) const { return images_.at(i).bow; }
   [[nodiscard]] const std::vector<cv::KeyPoint>& keypoints(std::size_t i) const {
     return images_.at(i).keypoints;
@@ -38,6 +52,9 @@ class BowPlaceMethod : public PlaceDescriptorMethod {
     cv::Mat descriptors;
     cv::Mat static_mask;  // empty when the whole image is static
     BowVector bow;
+    // kOwnStaticArea: the vector of the keypoints extracted on the static area; empty when the
+    // whole image is static (bow stands for it).
+    BowVector static_bow;
   };
 
   // The words of `image`'s keypoints that are static in both masks.
@@ -45,6 +62,7 @@ class BowPlaceMethod : public PlaceDescriptorMethod {
 
   std::shared_ptr<const Vocabulary> vocabulary_;
   feature::OrbExtractor extractor_;
+  BowMasking masking_;
   std::vector<ImageWords> images_;
 };
 

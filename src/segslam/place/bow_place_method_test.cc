@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <opencv2/imgproc.hpp>
 
 #include "segslam/feature/feature_test_images.h"
@@ -85,6 +86,34 @@ TEST_F(BowPlaceMethodTest, UnionMaskIgnoresKeypointsInTheMaskedArea) {
   EXPECT_LT(without_mask, 0.95);
   EXPECT_NEAR(with_mask, 1.0, 1e-9);
   EXPECT_DOUBLE_EQ(method.similarity(1, 0, true), with_mask);
+}
+
+TEST_F(BowPlaceMethodTest, StaticVariantDescribesEachImageByItsOwnStaticArea) {
+  BowPlaceMethod method(vocabulary_, testOrbOptions(), BowMasking::kOwnStaticArea);
+  EXPECT_EQ(method.name(), "bow:static");
+  cv::Mat static_mask(size_, CV_8UC1, cv::Scalar(255));
+  static_mask(masked_).setTo(0);
+  method.add({toBgr(scene_), static_mask});
+  method.add({toBgr(changed_scene_), static_mask});
+  EXPECT_LT(method.similarity(0, 1, false), 0.95);
+  EXPECT_NEAR(method.similarity(0, 1, true), 1.0, 1e-9);
+}
+
+TEST_F(BowPlaceMethodTest, StaticVariantKeepsWordsUnderTheOtherImagesMask) {
+  cv::Mat static_mask(size_, CV_8UC1, cv::Scalar(255));
+  static_mask(masked_).setTo(0);
+  BowPlaceMethod union_method(vocabulary_, testOrbOptions());
+  BowPlaceMethod static_method(vocabulary_, testOrbOptions(), BowMasking::kOwnStaticArea);
+  for (PlaceDescriptorMethod* method :
+       std::initializer_list<PlaceDescriptorMethod*>{&union_method, &static_method}) {
+    method->add({toBgr(scene_), {}});
+    method->add({toBgr(scene_), static_mask});
+  }
+  // The union drops the unmasked image's words in the other's masked area; the static variant
+  // keeps them, so the unmasked image has words the masked one lacks.
+  EXPECT_NEAR(union_method.similarity(0, 1, true), 1.0, 1e-9);
+  EXPECT_LT(static_method.similarity(0, 1, true), 0.9);
+  EXPECT_DOUBLE_EQ(static_method.similarity(0, 1, false), 1.0);
 }
 
 TEST_F(BowPlaceMethodTest, RejectsBadImages) {
