@@ -24,10 +24,10 @@ struct GeometricOptions {
   double depth_tolerance = 0.1;        // relative depth disagreement that also counts as motion
   double region_depth_range_m = 0.25;  // objects grown from seeds: depth within this of the seed
   int min_seeds_per_object = 5;        // fewer moving corners in a region: noise, not an object
+  double max_object_share = 0.4;       // a region larger than this share of the image is background
   // A region whose tracked corners the camera motion mostly explains is background, whatever a
   // few corners on it say (occlusion edges, aliasing): moving corners must be at least this share.
   double min_seed_share = 0.5;
-  double max_object_share = 0.4;       // a region larger than this share of the image is background
   // When more than this share of the image seems to move, the camera motion was misestimated:
   // nothing can be told about the frame.
   double max_moving_share = 0.3;
