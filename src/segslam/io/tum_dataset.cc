@@ -211,16 +211,20 @@ bool TumDataset::hasMasks() const {
   return !frames_.empty() && frames_.front().mask_path.has_value();
 }
 
-RgbdFrame TumDataset::loadFrame(std::size_t i) const {
+RgbdFrame TumDataset::loadFrame(std::size_t i, FrameLayers layers) const {
   const FrameRecord& record = frames_.at(i);
   RgbdFrame frame;
   frame.timestamp = record.timestamp;
   frame.rgb = readColourImage(record.rgb_path, camera_);
   const cv::Size size = frame.rgb.size();
   frame.depth = readDepthImage(record.depth_path, camera_, size);
-  if (record.mask_path) frame.mask = readMaskImage(*record.mask_path, size);
-  if (record.labels_path) frame.labels = readLabelImage(*record.labels_path, size);
-  if (record.instances_path) frame.instances = readInstanceImage(*record.instances_path, size);
+  if (layers.mask && record.mask_path) frame.mask = readMaskImage(*record.mask_path, size);
+  if (layers.labels && record.labels_path) {
+    frame.labels = readLabelImage(*record.labels_path, size);
+  }
+  if (layers.instances && record.instances_path) {
+    frame.instances = readInstanceImage(*record.instances_path, size);
+  }
   return frame;
 }
 

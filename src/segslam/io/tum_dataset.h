@@ -43,6 +43,14 @@ struct RgbdFrame {
   cv::Mat instances;  // CV_16UC1 instance ids, 0 = none; empty when absent
 };
 
+// Which of a frame's optional ground-truth images to load (colour and depth always are). Decoding
+// a mask costs as much as a third of a depth image: a run that does not use them skips them.
+struct FrameLayers {
+  bool mask = true;
+  bool labels = true;
+  bool instances = true;
+};
+
 // A sequence in the TUM RGB-D layout:
 // - rgb.txt and depth.txt (`timestamp path` per line), associated by nearest timestamp exactly
 //   as the TUM tools do; or associations.txt (associate.py output,
@@ -67,8 +75,9 @@ class TumDataset {
   [[nodiscard]] bool hasMasks() const;
 
   // Loads and validates the images of frame i: unreadable files, wrong image types and sizes
-  // throw util::Error naming the image file. i >= size() throws std::out_of_range.
-  [[nodiscard]] RgbdFrame loadFrame(std::size_t i) const;
+  // throw util::Error naming the image file. i >= size() throws std::out_of_range. Of the
+  // optional images, only those `layers` asks for are loaded.
+  [[nodiscard]] RgbdFrame loadFrame(std::size_t i, FrameLayers layers = {}) const;
 
  private:
   std::filesystem::path folder_;

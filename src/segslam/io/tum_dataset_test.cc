@@ -129,6 +129,13 @@ TEST_F(TumDatasetTest, LabelsAndInstancesAreAttachedAndLoaded) {
   EXPECT_EQ(frame.labels.at<std::uint8_t>(1, 1), 8);
   ASSERT_EQ(frame.instances.type(), CV_16UC1);
   EXPECT_EQ(frame.instances.at<std::uint16_t>(1, 1), 1000);
+
+  const RgbdFrame bare = TumDataset::open(folder_).loadFrame(0, FrameLayers{false, false, false});
+  EXPECT_FALSE(bare.rgb.empty());
+  EXPECT_FALSE(bare.depth.empty());
+  EXPECT_TRUE(bare.mask.empty());
+  EXPECT_TRUE(bare.labels.empty());
+  EXPECT_TRUE(bare.instances.empty());
 }
 
 TEST_F(TumDatasetTest, CameraPrecedenceFileThenPresetThenFolderYamlThenFolderName) {

@@ -171,8 +171,11 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       map_options.keyframe.mask_dilation_px = options.slam.mask_dilation_px;
       map_builder.emplace(dataset.camera(), map_options);
     }
+    // Ground-truth masks feed oracle masks only; labels and instances only the object map.
+    const io::FrameLayers layers{options.masks.source == MaskSource::kOracle, options.build_map,
+                                 options.build_map};
     for (std::size_t i = 0; i < summary.frames; ++i) {
-      const io::RgbdFrame frame = dataset.loadFrame(i);
+      const io::RgbdFrame frame = dataset.loadFrame(i, layers);
       if (options.realtime) realtime_lag_ms.push_back(pacer.wait(frame.timestamp));
       const auto mask_start = std::chrono::steady_clock::now();
       const FrameMasks frame_masks = masks.masks(frame, i);
