@@ -182,7 +182,7 @@ void registerRunCommand(CLI::App& app) {
                   "Keyframes made after a loop correction before the next loop is sought")
       ->capture_default_str();
   run->add_option("--loop-detector", options->loop_detector,
-                  "Loop candidates: bow (bag of words with the union mask, needs the vocabulary), "
+                  "Loop candidates: bow (bag of words of the static area, needs the vocabulary), "
                   "vote (descriptor vote, no vocabulary) or cnn (CNN descriptor with the union "
                   "mask, needs the backbone)")
       ->check(CLI::IsMember({"bow", "vote", "cnn"}))

@@ -25,8 +25,8 @@ struct SlamOptions {
   mapping::LocalMapperOptions mapper;
   // Loop closing on its own thread (inline in deterministic mode). Candidates by a CNN
   // descriptor with the union mask (loop::CnnLoopDetector) when a backbone is given, else by bag
-  // of words with the union mask (loop::BowLoopDetector) when a vocabulary is given, else by
-  // loop::DescriptorVoteDetector, which needs neither.
+  // of words of each keyframe's static area (loop::BowLoopDetector) when a vocabulary is given,
+  // else by loop::DescriptorVoteDetector, which needs neither.
   bool loop_closing = true;
   loop::LoopClosingOptions loop;
   std::optional<loop::CnnLoopBackbone> loop_backbone;
