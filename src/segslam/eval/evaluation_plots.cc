@@ -98,7 +98,7 @@ PlotSeries rmseLine(const std::vector<double>& times, double rmse, std::string_v
           {rmse, rmse},
           kRmseColour,
           false,
-          true};
+          "6,4"};
 }
 
 Plot ateErrorPlot(const TrajectoryEvaluation& evaluation) {

@@ -19,7 +19,7 @@ namespace {
 
 // Room around the plot area for the title, tick labels, axis labels and the legend.
 constexpr double kMarginLeft = 80.0;
-constexpr double kMarginRight = 200.0;
+constexpr double kMarginRight = 250.0;
 constexpr double kMarginTop = 36.0;
 constexpr double kMarginBottom = 52.0;
 // Pixels per tick, roughly: enough room for a label.
@@ -193,7 +193,9 @@ void renderLabels(Output out, const Plot& plot, const Frame& frame) {
 
 std::string strokeStyle(const PlotSeries& series) {
   return fmt::format(R"(fill="none" stroke="{}" stroke-width="1.5"{})", escapeXml(series.colour),
-                     series.dashed ? R"( stroke-dasharray="6,4")" : "");
+                     series.dash.empty()
+                         ? std::string()
+                         : fmt::format(R"( stroke-dasharray="{}")", escapeXml(series.dash)));
 }
 
 void renderLine(Output out, const Frame& frame, const PlotSeries& series) {

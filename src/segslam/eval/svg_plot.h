@@ -14,7 +14,7 @@ struct PlotSeries {
   std::vector<double> y{};         // same length as x; non-finite points are left out
   std::string colour = "#1f77b4";  // any SVG colour
   bool markers = false;            // dots instead of a line, for data without an order
-  bool dashed = false;
+  std::string dash{};              // SVG stroke-dasharray, e.g. "6,4"; empty = solid
 };
 
 // One panel: axes with ticks, grid, labels, title and a legend beside it.

@@ -41,7 +41,7 @@ Plot squarePlot(bool equal_aspect) {
 TEST(SvgPlot, DocumentHasAxesLabelsLegendAndLines) {
   Plot plot{.title = "Errors <ATE & RPE>", .x_label = "time [s]", .y_label = "error [m]"};
   plot.series.push_back({"ATE", {0, 1, 2}, {0.1, 0.3, 0.2}, "#d62728"});
-  plot.series.push_back({"RMSE", {0, 2}, {0.2, 0.2}, "#ff7f0e", false, true});
+  plot.series.push_back({"RMSE", {0, 2}, {0.2, 0.2}, "#ff7f0e", false, "6,4"});
   const std::vector<Plot> plots{plot};
   const auto svg = renderSvg(plots);
   EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
@@ -51,7 +51,7 @@ TEST(SvgPlot, DocumentHasAxesLabelsLegendAndLines) {
   EXPECT_NE(svg.find(">time [s]</text>"), std::string::npos);
   EXPECT_NE(svg.find(">error [m]</text>"), std::string::npos);
   EXPECT_NE(svg.find(">RMSE</text>"), std::string::npos);
-  EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);
+  EXPECT_NE(svg.find(R"(stroke-dasharray="6,4")"), std::string::npos);
   // Nice ticks on the y axis: 0.10 ... 0.30 in steps of 0.05.
   EXPECT_NE(svg.find(">0.15</text>"), std::string::npos);
   EXPECT_NE(svg.find(">0.30</text>"), std::string::npos);

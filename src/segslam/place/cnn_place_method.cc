@@ -119,6 +119,8 @@ CnnPlaceMethod::CnnPlaceMethod(std::shared_ptr<CnnFeatureBank> bank, std::size_t
 
 std::string CnnPlaceMethod::name() const {
   const std::string& layer = bank_->config().layers.at(layer_).name;
+  if (variant_ == CnnVariant::kPooledOwnStaticArea)
+    return fmt::format("cnn:{}:pooled:static", layer);
   return variant_ == CnnVariant::kPooled ? fmt::format("cnn:{}:pooled", layer)
                                          : fmt::format("cnn:{}", layer);
 }
@@ -132,23 +134,32 @@ double CnnPlaceMethod::similarity(std::size_t i, std::size_t j, bool union_mask)
   const CnnImageFeatures& first = bank_->image(i);
   const CnnImageFeatures& second = bank_->image(j);
   const cv::Size grid = bank_->grids()[layer_];
-  cv::Mat weights(grid, CV_32F, cv::Scalar(1.0));
-  if (union_mask) {
-    cv::Mat both = unionStaticMask(first.static_mask, second.static_mask);
-    if (variant_ == CnnVariant::kPooled) {
-      const double mask_pixels_per_input_pixel =
-          static_cast<double>(CnnFeatureBank::kMaskWidth) / bank_->config().input_size.width;
-      const int erosion = bank_->config().layers[layer_].erosion_px;
-      both =
-          erodeStaticMask(both, static_cast<int>(std::ceil(erosion * mask_pixels_per_input_pixel)));
-    }
-    weights = staticFraction(both, grid);
-  }
   const cv::Mat a = asFloat(first.layers[layer_]);
   const cv::Mat b = asFloat(second.layers[layer_]);
+  if (variant_ == CnnVariant::kPooledOwnStaticArea && union_mask) {
+    return pooledOwnMaskCosine(a, b, poolingWeights(first.static_mask),
+                               poolingWeights(second.static_mask), grid,
+                               bank_->config().pooling_grid);
+  }
+  cv::Mat weights(grid, CV_32F, cv::Scalar(1.0));
+  if (union_mask) {
+    const cv::Mat both = unionStaticMask(first.static_mask, second.static_mask);
+    weights =
+        variant_ == CnnVariant::kFlattened ? staticFraction(both, grid) : poolingWeights(both);
+  }
   const cv::Mat row_weights = weights.reshape(1, 1);
   if (variant_ == CnnVariant::kFlattened) return maskedCosine(a, b, row_weights);
   return pooledMaskedCosine(a, b, row_weights, grid, bank_->config().pooling_grid);
+}
+
+cv::Mat CnnPlaceMethod::poolingWeights(const cv::Mat& static_mask) const {
+  // Features see beyond their cell: the static area is eroded by the layer's reach.
+  const double mask_pixels_per_input_pixel =
+      static_cast<double>(CnnFeatureBank::kMaskWidth) / bank_->config().input_size.width;
+  const int erosion = bank_->config().layers[layer_].erosion_px;
+  const cv::Mat eroded = erodeStaticMask(
+      static_mask, static_cast<int>(std::ceil(erosion * mask_pixels_per_input_pixel)));
+  return staticFraction(eroded, bank_->grids()[layer_]).reshape(1, 1);
 }
 
 std::vector<std::unique_ptr<PlaceDescriptorMethod>> makeCnnPlaceMethods(
@@ -160,6 +171,8 @@ std::vector<std::unique_ptr<PlaceDescriptorMethod>> makeCnnPlaceMethods(
   for (std::size_t l = 0; l < bank->grids().size(); ++l) {
     if (bank->grids()[l].area() > 1) {
       methods.push_back(std::make_unique<CnnPlaceMethod>(bank, l, CnnVariant::kPooled));
+      methods.push_back(
+          std::make_unique<CnnPlaceMethod>(bank, l, CnnVariant::kPooledOwnStaticArea));
     }
   }
   return methods;

@@ -65,10 +65,14 @@ enum class CnnVariant {
   // union static area eroded by the layer's erosion_px (normalised by that area), so moving
   // objects and the features that see them drop out instead of zeroing part of the vector.
   kPooled,
+  // Masked average pooling with each map averaged over its own image's static area (eroded the
+  // same way) instead of the union: what the other image's moving objects hide stays in this
+  // one (the lesson of the bag of words, place::BowMasking::kOwnStaticArea).
+  kPooledOwnStaticArea,
 };
 
-// One layer of a backbone compared one way; named "cnn:<layer>" (flattened) or
-// "cnn:<layer>:pooled".
+// One layer of a backbone compared one way; named "cnn:<layer>" (flattened),
+// "cnn:<layer>:pooled" or "cnn:<layer>:pooled:static".
 class CnnPlaceMethod : public PlaceDescriptorMethod {
  public:
   CnnPlaceMethod(std::shared_ptr<CnnFeatureBank> bank, std::size_t layer, CnnVariant variant);
@@ -79,6 +83,10 @@ class CnnPlaceMethod : public PlaceDescriptorMethod {
   [[nodiscard]] double similarity(std::size_t i, std::size_t j, bool union_mask) const override;
 
  private:
+  // Static share of each cell of the layer's grid (1 x cells), the mask eroded by the layer's
+  // erosion_px; an empty mask is all static.
+  [[nodiscard]] cv::Mat poolingWeights(const cv::Mat& static_mask) const;
+
   std::shared_ptr<CnnFeatureBank> bank_;
   std::size_t layer_;
   CnnVariant variant_;

@@ -1,5 +1,6 @@
 #include "segslam/place/masked_similarity.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace segslam::place {
@@ -9,8 +10,15 @@ namespace {
 // An average over a few pixels of a cell is noise.
 constexpr double kMinPooledArea = 0.1;
 
-// Columns that average each cell's static area: features x pooling = cell means.
-cv::Mat poolingMatrix(const cv::Mat& weights, cv::Size grid, cv::Size cells) {
+// One column per cell that averages the cell's static area (features x pooling = cell means);
+// a cell with too little static area gets a zero column and is not `kept`.
+struct CellPooling {
+  cv::Mat columns;
+  std::vector<bool> kept;
+};
+
+CellPooling cellPooling(const cv::Mat& weights, cv::Size grid, cv::Size cells) {
+  CellPooling pooling;
   std::vector<cv::Mat> columns;
   for (int cy = 0; cy < cells.height; ++cy) {
     for (int cx = 0; cx < cells.width; ++cx) {
@@ -27,13 +35,17 @@ cv::Mat poolingMatrix(const cv::Mat& weights, cv::Size grid, cv::Size cells) {
           area += weights.at<float>(g);
         }
       }
-      if (area < kMinPooledArea * (x1 - x0) * (y1 - y0)) continue;
-      columns.push_back(column / area);
+      const bool kept = area >= kMinPooledArea * (x1 - x0) * (y1 - y0);
+      pooling.kept.push_back(kept);
+      columns.push_back(kept ? cv::Mat(column / area) : cv::Mat(column * 0.0));
     }
   }
-  cv::Mat pooling;
-  if (!columns.empty()) cv::hconcat(columns, pooling);
+  cv::hconcat(columns, pooling.columns);
   return pooling;
+}
+
+cv::Size clampedCells(cv::Size cells, cv::Size grid) {
+  return {std::min(cells.width, grid.width), std::min(cells.height, grid.height)};
 }
 
 }  // namespace
@@ -50,10 +62,21 @@ double maskedCosine(const cv::Mat& a, const cv::Mat& b, const cv::Mat& weights) 
 
 double pooledMaskedCosine(const cv::Mat& a, const cv::Mat& b, const cv::Mat& weights, cv::Size grid,
                           cv::Size cells) {
-  const cv::Size clamped(std::min(cells.width, grid.width), std::min(cells.height, grid.height));
-  const cv::Mat pooling = poolingMatrix(weights, grid, clamped);
-  if (pooling.empty()) return 0.0;
-  return cosineSimilarity(a * pooling, b * pooling);
+  // Cells left out have zero columns: they add nothing to the dot product or the norms.
+  const CellPooling pooling = cellPooling(weights, grid, clampedCells(cells, grid));
+  return cosineSimilarity(a * pooling.columns, b * pooling.columns);
+}
+
+double pooledOwnMaskCosine(const cv::Mat& a, const cv::Mat& b, const cv::Mat& weights_a,
+                           const cv::Mat& weights_b, cv::Size grid, cv::Size cells) {
+  CellPooling pooling_a = cellPooling(weights_a, grid, clampedCells(cells, grid));
+  CellPooling pooling_b = cellPooling(weights_b, grid, clampedCells(cells, grid));
+  for (std::size_t c = 0; c < pooling_a.kept.size(); ++c) {
+    if (pooling_a.kept[c] && pooling_b.kept[c]) continue;
+    pooling_a.columns.col(static_cast<int>(c)).setTo(0.0);
+    pooling_b.columns.col(static_cast<int>(c)).setTo(0.0);
+  }
+  return cosineSimilarity(a * pooling_a.columns, b * pooling_b.columns);
 }
 
 }  // namespace segslam::place

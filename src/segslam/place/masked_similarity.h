@@ -21,4 +21,10 @@ double maskedCosine(const cv::Mat& a, const cv::Mat& b, const cv::Mat& weights);
 double pooledMaskedCosine(const cv::Mat& a, const cv::Mat& b, const cv::Mat& weights, cv::Size grid,
                           cv::Size cells);
 
+// The same with each map averaged over its own weights (its own image's static area), so that
+// what the other image's moving objects hide is not removed from this one; a cell is left out
+// of both when either has less than a tenth static area there.
+double pooledOwnMaskCosine(const cv::Mat& a, const cv::Mat& b, const cv::Mat& weights_a,
+                           const cv::Mat& weights_b, cv::Size grid, cv::Size cells);
+
 }  // namespace segslam::place

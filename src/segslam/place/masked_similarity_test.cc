@@ -53,5 +53,28 @@ TEST(MaskedSimilarity, PooledWithNothingStaticIsZero) {
   EXPECT_EQ(pooledMaskedCosine(a, a, none, {2, 2}, {2, 1}), 0.0);
 }
 
+TEST(MaskedSimilarity, OwnMaskPoolingAveragesEachMapOverItsOwnStaticArea) {
+  // One channel on a 4 x 2 grid pooled into 2 x 1 cells; the background is 1 in the left half
+  // and 3 in the right one. a shows a mover in grid cell 1 (its own mask), b in grid cell 2.
+  const cv::Mat a = (cv::Mat_<float>(1, 8) << 1, 50, 3, 3, 1, 1, 3, 3);
+  const cv::Mat b = (cv::Mat_<float>(1, 8) << 1, 1, 90, 3, 1, 1, 3, 3);
+  const cv::Mat own_a = (cv::Mat_<float>(1, 8) << 1, 0, 1, 1, 1, 1, 1, 1);
+  const cv::Mat own_b = (cv::Mat_<float>(1, 8) << 1, 1, 0, 1, 1, 1, 1, 1);
+  EXPECT_NEAR(pooledOwnMaskCosine(a, b, own_a, own_b, {4, 2}, {2, 1}), 1.0, 1e-6);
+  const cv::Mat all(1, 8, CV_32F, cv::Scalar(1));
+  EXPECT_LT(pooledOwnMaskCosine(a, b, all, all, {4, 2}, {2, 1}), 0.99);
+}
+
+TEST(MaskedSimilarity, OwnMaskPoolingLeavesOutCellsEitherImageCannotSee) {
+  // a's left pooling cell is all dynamic: that cell is left out of both, whatever b shows there.
+  const cv::Mat a = (cv::Mat_<float>(1, 8) << 7, 7, 3, 3, 7, 7, 3, 3);
+  const cv::Mat b = (cv::Mat_<float>(1, 8) << 1, 2, 3, 3, 4, 5, 3, 3);
+  const cv::Mat own_a = (cv::Mat_<float>(1, 8) << 0, 0, 1, 1, 0, 0, 1, 1);
+  const cv::Mat own_b(1, 8, CV_32F, cv::Scalar(1));
+  EXPECT_NEAR(pooledOwnMaskCosine(a, b, own_a, own_b, {4, 2}, {2, 1}), 1.0, 1e-6);
+  const cv::Mat none(1, 8, CV_32F, cv::Scalar(0));
+  EXPECT_EQ(pooledOwnMaskCosine(a, b, none, own_b, {4, 2}, {2, 1}), 0.0);
+}
+
 }  // namespace
 }  // namespace segslam::place

@@ -99,9 +99,15 @@ std::vector<std::string> methodNames(const LoopEvaluation& evaluation) {
   return names;
 }
 
-// The pooled variant of a layer is drawn dashed in the colour of the layer's flattened one.
+// The pooled variants of a layer are drawn in the colour of the layer's flattened one, dashed
+// (union mask) or dotted (each image's own static area).
 std::string baseMethodName(const std::string& method) {
   return method.substr(0, method.find(":pooled"));
+}
+
+std::string dashOf(const std::string& method) {
+  if (method.ends_with(":pooled:static")) return "2,3";
+  return method.ends_with(":pooled") ? "6,4" : "";
 }
 
 std::string formatAp(double value) {
@@ -243,7 +249,7 @@ void writeLoopReport(const std::filesystem::path& out_dir, const LoopEvaluation&
       series.label =
           fmt::format("{} ({})", result.method, formatAp(result.curve.average_precision));
       series.colour = kColours[static_cast<std::size_t>(colour_index) % kColours.size()];
-      series.dashed = baseMethodName(result.method) != result.method;
+      series.dash = dashOf(result.method);
       for (const auto& point : result.curve.points) {
         series.x.push_back(point.recall);
         series.y.push_back(point.precision);
