@@ -119,10 +119,15 @@ CnnPlaceMethod::CnnPlaceMethod(std::shared_ptr<CnnFeatureBank> bank, std::size_t
 
 std::string CnnPlaceMethod::name() const {
   const std::string& layer = bank_->config().layers.at(layer_).name;
-  if (variant_ == CnnVariant::kPooledOwnStaticArea)
-    return fmt::format("cnn:{}:pooled:static", layer);
-  return variant_ == CnnVariant::kPooled ? fmt::format("cnn:{}:pooled", layer)
-                                         : fmt::format("cnn:{}", layer);
+  switch (variant_) {
+    case CnnVariant::kFlattened:
+      return fmt::format("cnn:{}", layer);
+    case CnnVariant::kPooled:
+      return fmt::format("cnn:{}:pooled", layer);
+    case CnnVariant::kPooledOwnStaticArea:
+      return fmt::format("cnn:{}:pooled:static", layer);
+  }
+  return fmt::format("cnn:{}", layer);
 }
 
 void CnnPlaceMethod::add(const PlaceImage& image) {
