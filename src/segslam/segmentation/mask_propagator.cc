@@ -30,17 +30,16 @@ void MaskPropagator::addFrame(std::uint64_t frame_id, const cv::Mat& image) {
   cv::resize(gray, small, cv::Size(), flow_scale_, flow_scale_, cv::INTER_AREA);
   if (has_frame_ && small.size() == previous_gray_.size()) {
     // Backward flow: new(x) ~ previous(x + flow(x)), which is what remapping a previous mask needs.
+    // Masks are carried at the flow's resolution: the network's own output is coarser than that,
+    // and full-size flow maps cost the tracking thread more than the flow itself.
     cv::Mat flow;
     flow_->calc(small, previous_gray_, flow);
-    cv::Mat full_flow;
-    cv::resize(flow, full_flow, gray.size(), 0.0, 0.0, cv::INTER_LINEAR);
-    full_flow *= 1.0 / flow_scale_;
-    Step step{newest_id_, cv::Mat(gray.size(), CV_32FC1), cv::Mat(gray.size(), CV_32FC1)};
-    for (int y = 0; y < gray.rows; ++y) {
-      const auto* f = full_flow.ptr<cv::Point2f>(y);
+    Step step{newest_id_, cv::Mat(small.size(), CV_32FC1), cv::Mat(small.size(), CV_32FC1)};
+    for (int y = 0; y < small.rows; ++y) {
+      const auto* f = flow.ptr<cv::Point2f>(y);
       auto* mx = step.map_x.ptr<float>(y);
       auto* my = step.map_y.ptr<float>(y);
-      for (int x = 0; x < gray.cols; ++x) {
+      for (int x = 0; x < small.cols; ++x) {
         mx[x] = static_cast<float>(x) + f[x].x;
         my[x] = static_cast<float>(y) + f[x].y;
       }
@@ -69,34 +68,44 @@ cv::Mat MaskPropagator::propagate(const cv::Mat& labels, std::uint64_t source_id
   const auto first = stepsFrom(source_id);
   if (!first) return {};
   if (*first == steps_.end()) return labels.clone();
-  cv::Mat current = labels;
+  cv::Mat current = toFlowResolution(labels);
   for (auto it = *first; it != steps_.end(); ++it) {
     cv::Mat next;
     cv::remap(current, next, it->map_x, it->map_y, cv::INTER_NEAREST, cv::BORDER_CONSTANT,
               cv::Scalar(0));
     current = next;
   }
-  return current;
+  return toSizeOf(current, labels);
+}
+
+cv::Mat MaskPropagator::toFlowResolution(const cv::Mat& image) const {
+  cv::Mat small;
+  cv::resize(image, small, previous_gray_.size(), 0.0, 0.0, cv::INTER_NEAREST);
+  return small;
+}
+
+cv::Mat MaskPropagator::toSizeOf(const cv::Mat& small, const cv::Mat& image) {
+  cv::Mat full;
+  cv::resize(small, full, image.size(), 0.0, 0.0, cv::INTER_NEAREST);
+  return full;
 }
 
 namespace {
 
 // One step of moveObjects: map_x/map_y say where each pixel of the new frame was in the old one,
-// so an object moves by minus the median of that offset over its pixels (every other pixel of
-// every other row: the flow is smooth at that scale, and the median costs a quarter).
+// so an object moves by minus the median of that offset over its pixels.
 cv::Mat moveEachObject(const cv::Mat& mask, const cv::Mat& map_x, const cv::Mat& map_y) {
-  constexpr int kSampleStep = 2;
   cv::Mat objects;
   cv::Mat stats;
   cv::Mat centroids;
   const int count = cv::connectedComponentsWithStats(mask != 0, objects, stats, centroids, 8);
   std::vector<std::vector<float>> dx(count);
   std::vector<std::vector<float>> dy(count);
-  for (int y = 0; y < mask.rows; y += kSampleStep) {
+  for (int y = 0; y < mask.rows; ++y) {
     const auto* object = objects.ptr<int>(y);
     const auto* mx = map_x.ptr<float>(y);
     const auto* my = map_y.ptr<float>(y);
-    for (int x = 0; x < mask.cols; x += kSampleStep) {
+    for (int x = 0; x < mask.cols; ++x) {
       if (object[x] == 0) continue;
       dx[object[x]].push_back(mx[x] - static_cast<float>(x));
       dy[object[x]].push_back(my[x] - static_cast<float>(y));
@@ -125,11 +134,11 @@ cv::Mat MaskPropagator::moveObjects(const cv::Mat& mask, std::uint64_t source_id
   if (!first) return {};
   // Most frames show nobody: nothing to move, no components to label at every step.
   if (*first == steps_.end() || cv::countNonZero(mask) == 0) return mask.clone();
-  cv::Mat current = mask;
+  cv::Mat current = toFlowResolution(mask);
   for (auto it = *first; it != steps_.end(); ++it) {
     current = moveEachObject(current, it->map_x, it->map_y);
   }
-  return current;
+  return toSizeOf(current, mask);
 }
 
 }  // namespace segslam::segmentation

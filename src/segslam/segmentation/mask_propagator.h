@@ -37,8 +37,12 @@ class MaskPropagator {
   struct Step {
     std::uint64_t from_id;  // the previous frame
     cv::Mat map_x;          // for each pixel of the next frame: where it was in from_id
-    cv::Mat map_y;
+    cv::Mat map_y;          // (both at the flow's resolution)
   };
+
+  // Nearest-neighbour resizing between an image's size and the flow's.
+  [[nodiscard]] cv::Mat toFlowResolution(const cv::Mat& image) const;
+  [[nodiscard]] static cv::Mat toSizeOf(const cv::Mat& small, const cv::Mat& image);
 
   // The steps from `source_id` to the newest frame: their first, or steps_.end() when
   // source_id is the newest frame; nullopt when it is unknown.
