@@ -66,10 +66,11 @@ MaskStream::Result MaskStream::run(const SegmentationJob& job) {
     ++runs_;
     total_ms_ += ms;
   }
-  if (masks.dynamic.empty()) masks.dynamic = cv::Mat::zeros(job.current.bgr.size(), CV_8UC1);
+  const bool undecided = masks.dynamic.empty();
+  if (undecided) masks.dynamic = cv::Mat::zeros(job.current.bgr.size(), CV_8UC1);
   if (masks.labels.empty()) masks.labels = masks.dynamic.clone();
   std::vector<float> depths = objectDepths(masks.dynamic, job.current.depth, options_.refinement);
-  return {job.current.id, std::move(masks), std::move(depths), job.current.depth};
+  return {job.current.id, undecided, std::move(masks), std::move(depths), job.current.depth};
 }
 
 void MaskStream::submit(SegmentationJob job) {
@@ -125,6 +126,7 @@ void MaskStream::segmentSynchronously(const SegmentationJob& job) {
 }
 
 void MaskStream::collect(Result result, std::uint64_t frame_id) {
+  if (result.undecided && latest_) return;
   if (result.frame_id < frame_id) {
     late_ = LateOutput{result.frame_id, result.masks.dynamic, result.depth};
   }

@@ -57,6 +57,9 @@ struct SegmentationJob {
   StreamFrame current;
   cv::Mat known_dynamic;
 };
+// An empty `dynamic` mask means the segmenter could not tell (e.g. geometric segmentation that
+// found no trustworthy camera motion): the stream goes on carrying its previous output, since an
+// object that was moving a moment ago most likely still is. An all-zero mask means nothing moves.
 using Segment = std::function<SemanticMasks(const SegmentationJob&)>;
 
 // An output that arrived after its frame had been handed on: the map can still be cleaned of
@@ -98,6 +101,7 @@ class MaskStream {
  private:
   struct Result {
     std::uint64_t frame_id;
+    bool undecided;  // the segmenter could not tell: masks are all zero
     SemanticMasks masks;
     std::vector<float> object_depths;  // of the dynamic objects, in the segmented frame
     cv::Mat depth;                     // of the segmented frame

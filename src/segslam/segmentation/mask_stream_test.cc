@@ -128,6 +128,31 @@ TEST(MaskStream, SynchronousLatencyDeliversOutputsLateAndReportsThem) {
   EXPECT_EQ(stream.runs(), 3);
 }
 
+// Frame 0: an object at the left edge. Frames 1-3: the segmenter cannot tell (empty mask).
+// Frame 4 and later: it sees nothing moving (all-zero mask).
+Segment unsureAfterTheFirstFrame() {
+  return [](const SegmentationJob& job) {
+    if (job.current.id >= 1 && job.current.id <= 3) return SemanticMasks{};
+    cv::Mat dynamic = cv::Mat::zeros(job.current.bgr.size(), CV_8UC1);
+    if (job.current.id == 0) dynamic(cv::Rect(0, 0, 20, 20)) = 255;
+    return SemanticMasks{dynamic, dynamic};
+  };
+}
+
+TEST(MaskStream, AnUndecidedOutputKeepsTheObjectsOfTheOneBefore) {
+  MaskStreamOptions options;
+  options.synchronous = true;
+  options.interval = 1;
+  MaskStream stream(unsureAfterTheFirstFrame(), options);
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  for (std::uint64_t frame = 0; frame <= 3; ++frame) {
+    EXPECT_GE(cv::countNonZero(stream.masksFor(frame, bgr, cv::Mat()).dynamic), 20 * 20) << frame;
+    EXPECT_FALSE(stream.takeLateOutput().has_value());
+  }
+  EXPECT_EQ(cv::countNonZero(stream.masksFor(4, bgr, cv::Mat()).dynamic), 0);
+  EXPECT_EQ(stream.runs(), 5);
+}
+
 TEST(MaskStream, AsynchronousSegmenterSeesFramesInOrder) {
   auto record = std::make_shared<RecordedJobs>();
   MaskStream stream(recordingSegment(record));
