@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
-#include <stdexcept>
 
 #include "segslam/util/median.h"
 
@@ -157,34 +156,6 @@ cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px
   const cv::Rect window = searchWindow(mask, band, options.seed_step_px);
   cv::Mat refined = cv::Mat::zeros(mask.size(), CV_8UC1);
   refineWithin(mask(window), depth(window), band, object_depths, options).copyTo(refined(window));
-  return refined;
-}
-
-cv::Mat refineMaskByDepthAtScale(const cv::Mat& mask, const cv::Mat& depth, int band_px,
-                                 double scale, const std::vector<float>& object_depths,
-                                 const DepthRefinementOptions& options) {
-  if (scale <= 0.0 || scale > 1.0) {
-    throw std::invalid_argument("refineMaskByDepthAtScale: scale must be in (0, 1]");
-  }
-  if (scale == 1.0 || depth.empty() || mask.empty()) {
-    return refineMaskByDepth(mask, depth, band_px, object_depths, options);
-  }
-  const auto scaled = [scale](int px) {
-    return std::max(static_cast<int>(std::lround(px * scale)), 1);
-  };
-  DepthRefinementOptions small_options = options;
-  small_options.core_erosion_px = scaled(options.core_erosion_px);
-  small_options.seed_step_px = scaled(options.seed_step_px);
-  small_options.min_object_area_px =
-      static_cast<int>(std::lround(options.min_object_area_px * scale * scale));
-  cv::Mat small_mask;
-  cv::Mat small_depth;
-  cv::resize(mask, small_mask, cv::Size(), scale, scale, cv::INTER_NEAREST);
-  cv::resize(depth, small_depth, small_mask.size(), 0.0, 0.0, cv::INTER_NEAREST);
-  const cv::Mat small =
-      refineMaskByDepth(small_mask, small_depth, scaled(band_px), object_depths, small_options);
-  cv::Mat refined;
-  cv::resize(small, refined, mask.size(), 0.0, 0.0, cv::INTER_NEAREST);
   return refined;
 }
 

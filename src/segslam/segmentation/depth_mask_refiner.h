@@ -36,12 +36,4 @@ cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px
                           const std::vector<float>& object_depths = {},
                           const DepthRefinementOptions& options = {});
 
-// refineMaskByDepth on the mask and depth resized by `scale` (nearest neighbour; 0 < scale <= 1),
-// the band and the options' pixel measures scaled alike, the result back at the mask's size. The
-// outline is found to within 1 / scale pixels, finer than a network output that was computed on a
-// downscaled image; at scale 0.5 it costs the tracking thread about half as much.
-cv::Mat refineMaskByDepthAtScale(const cv::Mat& mask, const cv::Mat& depth, int band_px,
-                                 double scale, const std::vector<float>& object_depths = {},
-                                 const DepthRefinementOptions& options = {});
-
 }  // namespace segslam::segmentation

@@ -98,22 +98,5 @@ TEST(RefineMaskByDepth, WithoutDepthOrObjectTheMaskIsUnchanged) {
   EXPECT_EQ(cv::countNonZero(refineMaskByDepth(empty, sceneDepth(), 8)), 0);
 }
 
-// At half scale the lagging mask snaps to the same object, to within a pixel of the half image.
-TEST(RefineMaskByDepthAtScale, HalfScaleFindsTheSameObjectToWithinTwoPixels) {
-  const cv::Mat lagging = maskOf(kObject - cv::Point(12, 0));
-  const cv::Mat refined = refineMaskByDepthAtScale(lagging, sceneDepth(), 16, 0.5);
-  ASSERT_EQ(refined.size(), lagging.size());
-  const cv::Mat inner =
-      maskOf(cv::Rect(kObject.x + 2, kObject.y + 2, kObject.width - 4, kObject.height - 4));
-  const cv::Mat outer =
-      maskOf(cv::Rect(kObject.x - 2, kObject.y - 2, kObject.width + 4, kObject.height + 4));
-  EXPECT_EQ(cv::countNonZero(inner & ~refined), 0);
-  EXPECT_EQ(cv::countNonZero(refined & ~outer), 0);
-  EXPECT_EQ(cv::countNonZero(refineMaskByDepthAtScale(lagging, sceneDepth(), 16, 1.0) !=
-                             refineMaskByDepth(lagging, sceneDepth(), 16)),
-            0);
-  EXPECT_THROW(refineMaskByDepthAtScale(lagging, sceneDepth(), 16, 0.0), std::invalid_argument);
-}
-
 }  // namespace
 }  // namespace segslam::segmentation

@@ -163,9 +163,8 @@ cv::Mat MaskStream::fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,
   if (cv::countNonZero(dynamic) == 0) return dynamic;
   if (age == 0 && !options_.refine_fresh_masks) return dynamic;
   if (!depth.empty()) {
-    return refineMaskByDepthAtScale(dynamic, depth, lag + options_.min_band_px,
-                                    options_.refinement_scale, latest_->object_depths,
-                                    options_.refinement);
+    return refineMaskByDepth(dynamic, depth, lag + options_.min_band_px, latest_->object_depths,
+                             options_.refinement);
   }
   if (lag == 0) return dynamic;
   cv::Mat grown;

@@ -37,9 +37,6 @@ struct MaskStreamOptions {
   // Whether a fresh output (age 0) is snapped to depth too; off for outputs already grown over
   // depth (geometric segmentation).
   bool refine_fresh_masks = true;
-  // Depth snapping works on the images resized by this much (refineMaskByDepthAtScale): the
-  // walker's carried masks score the same IoU at 0.5 as at full size, in half the time.
-  double refinement_scale = 0.5;
   DepthRefinementOptions refinement;
 };
 
