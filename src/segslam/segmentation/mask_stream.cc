@@ -23,6 +23,7 @@ MaskStream::MaskStream(Segment segment, MaskStreamOptions options,
       options_(options),
       propagator_(propagator ? std::move(propagator) : std::make_shared<MaskPropagator>()) {
   if (options_.interval < 1) options_.interval = 1;
+  if (options_.busy_interval < 1) options_.busy_interval = 1;
   if (!options_.synchronous) thread_ = std::thread([this] { work(); });
 }
 
@@ -74,13 +75,20 @@ MaskStream::Result MaskStream::run(const SegmentationJob& job) {
 }
 
 void MaskStream::submit(SegmentationJob job) {
+  if (!segmenterWanted(job.current.id)) return;
   {
     std::lock_guard lock(mutex_);
     if (busy_ || pending_) return;
     pending_ =
         SegmentationJob{copyOf(job.previous), copyOf(job.current), job.known_dynamic.clone()};
   }
+  last_submitted_ = job.current.id;
   changed_.notify_all();
+}
+
+bool MaskStream::segmenterWanted(std::uint64_t frame_id) const {
+  if (!last_submitted_ || tracking_busy_share_.load() < options_.busy_share_limit) return true;
+  return frame_id >= *last_submitted_ + static_cast<std::uint64_t>(options_.busy_interval);
 }
 
 SemanticMasks MaskStream::masksFor(std::uint64_t frame_id, const cv::Mat& bgr, const cv::Mat& depth,
@@ -143,9 +151,11 @@ SemanticMasks MaskStream::carryLatest(std::uint64_t frame_id, cv::Size size) {
   if (!carried_ || carried_->source_id != latest_->frame_id) {
     carried_ = Carried{latest_->frame_id, latest_->frame_id, latest_->masks};
   }
-  SemanticMasks masks{propagator_->propagate(carried_->masks.labels, carried_->frame_id),
+  SemanticMasks masks{options_.carry_labels
+                          ? propagator_->propagate(carried_->masks.labels, carried_->frame_id)
+                          : cv::Mat(),
                       propagator_->moveObjects(carried_->masks.dynamic, carried_->frame_id)};
-  if (masks.labels.empty()) masks.labels = cv::Mat::zeros(size, CV_8UC1);
+  if (masks.labels.empty() && options_.carry_labels) masks.labels = cv::Mat::zeros(size, CV_8UC1);
   if (masks.dynamic.empty()) masks.dynamic = cv::Mat::zeros(size, CV_8UC1);
   carried_->frame_id = frame_id;
   carried_->masks = masks;
@@ -172,6 +182,8 @@ cv::Mat MaskStream::fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,
              cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * lag + 1, 2 * lag + 1)));
   return grown;
 }
+
+void MaskStream::setTrackingBusyShare(double share) { tracking_busy_share_.store(share); }
 
 int MaskStream::runs() const {
   std::lock_guard lock(mutex_);

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <thread>
 #include <vector>
 
 #include "segslam/testing/test_support.h"
@@ -151,6 +153,34 @@ TEST(MaskStream, AnUndecidedOutputKeepsTheObjectsOfTheOneBefore) {
   }
   EXPECT_EQ(cv::countNonZero(stream.masksFor(4, bgr, cv::Mat()).dynamic), 0);
   EXPECT_EQ(stream.runs(), 5);
+}
+
+TEST(MaskStream, BusyTrackingGetsTheSegmenterOnlyEveryBusyIntervalFrames) {
+  MaskStreamOptions options;
+  options.busy_interval = 10;
+  MaskStream stream(countingSegment(), options);
+  stream.setTrackingBusyShare(1.0);  // tracking never waits for a frame
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  for (std::uint64_t frame = 0; frame < 60; ++frame) {
+    ASSERT_EQ(stream.masksFor(frame, bgr, cv::Mat()).dynamic.size(), bgr.size()) << frame;
+  }
+  // Frames 0, 10, ..., 50 at most; a frame is skipped when the segmenter is still busy.
+  EXPECT_GE(stream.runs(), 1);
+  EXPECT_LE(stream.runs(), 6);
+}
+
+TEST(MaskStream, TrackingThatWaitsForItsFramesGetsTheSegmenterWheneverItIsFree) {
+  MaskStream stream(countingSegment());
+  stream.setTrackingBusyShare(0.3);  // 10 ms of work per 33 ms frame
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  constexpr int kFrames = 40;
+  for (std::uint64_t frame = 0; frame < kFrames; ++frame) {
+    ASSERT_EQ(stream.masksFor(frame, bgr, cv::Mat()).dynamic.size(), bgr.size()) << frame;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  // Throttled it would run once (every 45 frames); a frame is skipped only when the
+  // segmenter thread has not finished the one before, which a loaded machine may cause.
+  EXPECT_GE(stream.runs(), kFrames / 2);
 }
 
 TEST(MaskStream, AsynchronousSegmenterSeesFramesInOrder) {

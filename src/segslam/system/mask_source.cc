@@ -80,8 +80,9 @@ segmentation::Segment geometricSegment(const core::Camera& camera,
 constexpr int kGeometricInterval = 1;
 
 segmentation::MaskStreamOptions streamOptions(bool synchronous, int interval, int latency,
-                                              bool refine_fresh_masks) {
+                                              bool refine_fresh_masks, bool carry_labels) {
   segmentation::MaskStreamOptions options;
+  options.carry_labels = carry_labels;
   options.synchronous = synchronous;
   options.interval = interval;
   options.latency_frames = latency;
@@ -103,13 +104,15 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
     const auto config = segmentation::readModelConfig(options.model_config);
     semantic_ = std::make_unique<segmentation::MaskStream>(
         semanticSegment(options, config),
-        streamOptions(synchronous, options.network_interval, options.network_latency, true), flow);
+        streamOptions(synchronous, options.network_interval, options.network_latency, true,
+                      options.carry_labels),
+        flow);
     semantic_classes_.emplace(config.classes);
   }
   if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
     geometric_ = std::make_unique<segmentation::MaskStream>(
         geometricSegment(dataset.camera(), options.geometric),
-        streamOptions(synchronous, kGeometricInterval, 0, false), flow);
+        streamOptions(synchronous, kGeometricInterval, 0, false, false), flow);
   }
 }
 
@@ -121,7 +124,9 @@ FrameMasks FrameMaskSource::masks(const io::RgbdFrame& frame, std::size_t index)
   }
   if (semantic_) {
     const segmentation::SemanticMasks network = semantic_->masksFor(index, frame.rgb, frame.depth);
-    masks = {network.dynamic, semantic_classes_->apply(network.labels), cv::Mat(), {}};
+    const cv::Mat labels =
+        network.labels.empty() ? cv::Mat() : semantic_classes_->apply(network.labels);
+    masks = {network.dynamic, labels, cv::Mat(), {}};
     if (auto late = semantic_->takeLateOutput()) masks.late.push_back(std::move(*late));
   }
   if (geometric_) {
@@ -135,6 +140,11 @@ FrameMasks FrameMaskSource::masks(const io::RgbdFrame& frame, std::size_t index)
 
 cv::Mat FrameMaskSource::dynamicMask(const io::RgbdFrame& frame, std::size_t index) {
   return masks(frame, index).dynamic;
+}
+
+void FrameMaskSource::setTrackingBusyShare(double share) {
+  if (semantic_) semantic_->setTrackingBusyShare(share);
+  if (geometric_) geometric_->setTrackingBusyShare(share);
 }
 
 int FrameMaskSource::networkRuns() const { return semantic_ ? semantic_->runs() : 0; }

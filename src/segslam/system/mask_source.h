@@ -37,6 +37,9 @@ struct MaskSourceOptions {
   // In synchronous mode each network output is used this many frames after its frame, as on
   // its own thread: reproducible runs of the real-time pipeline.
   int network_latency = 0;
+  // Whether the network's per-pixel labels are carried to every frame (the object map reads
+  // them); without, FrameMasks::labels stays empty and carrying masks costs less.
+  bool carry_labels = true;
 };
 
 // One frame's masks and the labels its map points get.
@@ -62,6 +65,12 @@ class FrameMaskSource {
   // they are the dataset's (labels.txt, instances.txt), when it has them.
   FrameMasks masks(const io::RgbdFrame& frame, std::size_t index);
   cv::Mat dynamicMask(const io::RgbdFrame& frame, std::size_t index);
+
+  // Whether masks are computed (semantic, geometric, fused) rather than read (oracle) or none.
+  [[nodiscard]] bool segments() const { return semantic_ || geometric_; }
+  // Tells the segmenters how busy the tracking thread is (segmentation::BusyShare), from any
+  // thread: while tracking has no CPU to spare, they run less often.
+  void setTrackingBusyShare(double share);
 
   [[nodiscard]] int networkRuns() const;
   [[nodiscard]] double meanNetworkMilliseconds() const;

@@ -9,12 +9,12 @@
 #include <fstream>
 #include <opencv2/core/utility.hpp>
 #include <optional>
-#include <thread>
 
 #include "segslam/eval/closest_index.h"
 #include "segslam/eval/evaluation_plots.h"
 #include "segslam/eval/evaluation_report.h"
 #include "segslam/io/trajectory_io.h"
+#include "segslam/system/frame_player.h"
 #include "segslam/util/elapsed_time.h"
 #include "segslam/util/error.h"
 
@@ -124,31 +124,6 @@ void checkLoops(const io::TumDataset& dataset, SequenceRunSummary& summary) {
   }
 }
 
-// Paces a loop over frames to their timestamps: wait() returns when the frame would have arrived
-// from a camera started with the first frame, and how late that call came (ms, 0 when early).
-class RealtimePacer {
- public:
-  double wait(double timestamp) {
-    const auto now = std::chrono::steady_clock::now();
-    if (!first_timestamp_) {
-      first_timestamp_ = timestamp;
-      start_ = now;
-      return 0.0;
-    }
-    const auto arrival = start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                      std::chrono::duration<double>(timestamp - *first_timestamp_));
-    if (now < arrival) {
-      std::this_thread::sleep_until(arrival);
-      return 0.0;
-    }
-    return std::chrono::duration<double, std::milli>(now - arrival).count();
-  }
-
- private:
-  std::optional<double> first_timestamp_;
-  std::chrono::steady_clock::time_point start_;
-};
-
 }  // namespace
 
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
@@ -161,9 +136,10 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   summary.frames = std::min(options.max_frames, dataset.size());
   std::vector<FrameStats> stats;
   std::vector<double> realtime_lag_ms;
-  RealtimePacer pacer;
   {
-    FrameMaskSource masks(dataset, options.masks, options.slam.deterministic);
+    auto mask_options = options.masks;
+    mask_options.carry_labels = options.build_map;  // only the object map reads labels
+    FrameMaskSource masks(dataset, mask_options, options.slam.deterministic);
     SlamSystem slam(dataset.camera(), options.slam);
     std::optional<dense::MapBuilder> map_builder;
     if (options.build_map) {
@@ -174,20 +150,20 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     // Ground-truth masks feed oracle masks only; labels and instances only the object map.
     const io::FrameLayers layers{options.masks.source == MaskSource::kOracle, options.build_map,
                                  options.build_map};
+    FramePlayer player(dataset, masks, {layers, options.realtime, !options.slam.deterministic});
     for (std::size_t i = 0; i < summary.frames; ++i) {
-      const io::RgbdFrame frame = dataset.loadFrame(i, layers);
-      if (options.realtime) realtime_lag_ms.push_back(pacer.wait(frame.timestamp));
-      const auto mask_start = std::chrono::steady_clock::now();
-      const FrameMasks frame_masks = masks.masks(frame, i);
-      const double mask_ms = util::millisecondsSince(mask_start);
+      const PlayedFrame played = player.take(i, summary.frames - 1);
+      const io::RgbdFrame& frame = played.frame;
+      const FrameMasks& frame_masks = played.masks;
+      if (options.realtime) realtime_lag_ms.push_back(played.lag_ms);
       for (const auto& late : frame_masks.late) {
         summary.points_culled_by_late_masks +=
             slam.applyLateMask(late.frame_id, late.dynamic, late.depth);
       }
       stats.push_back(
           slam.processFrame(frame.timestamp, frame.rgb, frame.depth, frame_masks.dynamic));
-      stats.back().mask_ms = mask_ms;
-      stats.back().tracking_ms += mask_ms;
+      stats.back().mask_ms = played.mask_ms;
+      stats.back().tracking_ms += played.mask_ms;
       if (map_builder && stats.back().keyframe) {
         map_builder->addKeyFrame(stats.back().frame_id, frame.timestamp,
                                  {frame.rgb, frame.depth, frame_masks.dynamic, frame_masks.labels,
