@@ -34,8 +34,8 @@ TEST(BowLoopDetector, EntryHasTheWordsOfTheStaticKeypointsOnly) {
                            31.0F);
     if (keypoints.back().pt.x >= 150.0F) static_descriptors.push_back(descriptors.row(k));
   }
-  const auto camera =
-      std::make_shared<map::FrameCamera>(core::Camera{}, 40.0, 40.0, feature::ScaleLevels(8, 1.2));
+  const auto camera = std::make_shared<map::FrameCamera>(
+      core::Camera{}, map::kDefaultVirtualBaselineM, 40.0, feature::ScaleLevels(8, 1.2));
   const map::Frame frame(0, 0.0, keypoints, descriptors, cv::Mat(), dynamic_mask, camera);
   const map::KeyFrame keyframe(0, frame);
   const Entry entry = detector.entryOf(keyframe);
@@ -86,7 +86,7 @@ class BowLoopDetectorOnALap : public ::testing::Test {
   synth::SyntheticSequence sequence_;
   feature::OrbExtractor extractor_;
   std::shared_ptr<const map::FrameCamera> camera_ = std::make_shared<map::FrameCamera>(
-      sequence_.camera(), 40.0, 40.0, feature::ScaleLevels(8, 1.2));
+      sequence_.camera(), map::kDefaultVirtualBaselineM, 40.0, feature::ScaleLevels(8, 1.2));
   std::vector<std::unique_ptr<map::KeyFrame>> keyframes_;
 };
 

@@ -94,7 +94,7 @@ class CnnLoopDetectorOnALap : public ::testing::Test {
   std::optional<CnnLoopBackbone> backbone_;
   synth::SyntheticSequence sequence_;
   std::shared_ptr<const map::FrameCamera> camera_ = std::make_shared<map::FrameCamera>(
-      sequence_.camera(), 40.0, 40.0, feature::ScaleLevels(8, 1.2));
+      sequence_.camera(), map::kDefaultVirtualBaselineM, 40.0, feature::ScaleLevels(8, 1.2));
   std::vector<std::unique_ptr<map::KeyFrame>> keyframes_;
 };
 

@@ -11,8 +11,8 @@ namespace {
 constexpr int kPoints = 300;
 
 struct Scene {
-  std::shared_ptr<const map::FrameCamera> camera =
-      std::make_shared<map::FrameCamera>(core::Camera{}, 40.0, 40.0, feature::ScaleLevels(8, 1.2));
+  std::shared_ptr<const map::FrameCamera> camera = std::make_shared<map::FrameCamera>(
+      core::Camera{}, map::kDefaultVirtualBaselineM, 40.0, feature::ScaleLevels(8, 1.2));
   std::vector<LoopMapPoint> points;  // world frame = the candidate's map
   geometry::Pose T_query_w = geometry::Pose::Identity();
   LoopQuery query;

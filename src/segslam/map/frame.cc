@@ -66,11 +66,11 @@ std::vector<std::size_t> KeypointGrid::featuresInArea(const std::vector<cv::KeyP
   return found;
 }
 
-FrameCamera::FrameCamera(const core::Camera& cam, double bf, double close_depth_factor,
+FrameCamera::FrameCamera(const core::Camera& cam, double baseline_m, double close_depth_baselines,
                          const feature::ScaleLevels& scale_levels)
     : camera(cam),
-      stereo{cam.fx, cam.fy, cam.cx, cam.cy, bf},
-      close_depth_m(close_depth_factor * bf / cam.fx),
+      stereo{cam.fx, cam.fy, cam.cx, cam.cy, cam.fx * baseline_m},
+      close_depth_m(close_depth_baselines * baseline_m),
       undistorted_bounds(undistortedBounds(cam)),
       levels(scale_levels) {
   if (!cam.hasDistortion()) return;

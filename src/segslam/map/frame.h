@@ -39,6 +39,12 @@ class KeypointGrid {
   std::vector<std::vector<std::size_t>> cells_;
 };
 
+// ORB-SLAM2's TUM setting, bf = 40, as a baseline in metres at the 640x480 Kinect's fx of 525
+// (7.6 cm, close to the real 7.5 cm). bf must follow fx: a fixed bf of 40 trusted depth out to
+// 6.1 m on a 320x240 image (3.0 m on 640x480), so keyframes came only when tracking was nearly
+// lost, and a synthetic 320x240 lap came out 9 % too large.
+inline constexpr double kDefaultVirtualBaselineM = 40.0 / 525.0;
+
 // The static description of the sensor that every frame shares.
 struct FrameCamera {
   core::Camera camera;
@@ -50,7 +56,9 @@ struct FrameCamera {
   // raw depth image; empty when the camera has no distortion.
   cv::Mat raw_pixel_of_undistorted;
 
-  FrameCamera(const core::Camera& camera, double bf, double close_depth_factor,
+  // `baseline_m`: the virtual stereo baseline in metres. bf is fx times it and the close depth
+  // `close_depth_baselines` times it, so both describe the same sensor at any image size.
+  FrameCamera(const core::Camera& camera, double baseline_m, double close_depth_baselines,
               const feature::ScaleLevels& levels);
 };
 

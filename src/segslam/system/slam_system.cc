@@ -45,7 +45,7 @@ std::unique_ptr<loop::LoopCandidateDetector> loopCandidateDetector(const SlamOpt
 SlamSystem::SlamSystem(const core::Camera& camera, SlamOptions options)
     : options_(options),
       camera_(std::make_shared<map::FrameCamera>(
-          camera, options.bf, options.close_depth_baselines,
+          camera, options.virtual_baseline_m, options.close_depth_baselines,
           feature::ScaleLevels(options.orb.num_levels, options.orb.scale_factor))),
       extractor_(extractorOptions(options.orb)),
       mapper_(map_, options.mapper),

@@ -13,6 +13,7 @@
 #include "segslam/loop/cnn_loop_detector.h"
 #include "segslam/loop/descriptor_vote_detector.h"
 #include "segslam/loop/loop_closer.h"
+#include "segslam/map/frame.h"
 #include "segslam/map/map.h"
 #include "segslam/mapping/local_mapper.h"
 #include "segslam/tracking/tracker.h"
@@ -34,9 +35,9 @@ struct SlamOptions {
   std::shared_ptr<const place::Vocabulary> loop_vocabulary;
   loop::BowLoopOptions loop_bow;
   loop::DescriptorVoteOptions loop_detector;
-  // Virtual stereo baseline times fx (ORB-SLAM2's TUM setting) and the depth, in baselines,
-  // below which a keypoint's depth is trusted to create points (40 baselines ~ 3 m).
-  double bf = 40.0;
+  // Virtual stereo baseline in metres and the depth, in baselines, below which a keypoint's
+  // depth is trusted to create points (40 baselines ~ 3.1 m).
+  double virtual_baseline_m = map::kDefaultVirtualBaselineM;
   double close_depth_baselines = 40.0;
   // Dilation (pixels) of the dynamic mask before keypoint extraction and point projection.
   int mask_dilation_px = 10;

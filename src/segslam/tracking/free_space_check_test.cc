@@ -14,9 +14,9 @@ map::Frame frameFacingWall() {
   const core::Camera camera;
   cv::Mat depth(camera.height, camera.width, CV_32F, cv::Scalar(kWallDepth));
   depth(cv::Rect(static_cast<int>(camera.cx) - 5, static_cast<int>(camera.cy) - 5, 11, 11)) = 0.0f;
-  map::Frame frame(
-      0, 0.0, {}, cv::Mat(0, 32, CV_8U), depth, cv::Mat(),
-      std::make_shared<map::FrameCamera>(camera, 40.0, 40.0, feature::ScaleLevels(8, 1.2)));
+  map::Frame frame(0, 0.0, {}, cv::Mat(0, 32, CV_8U), depth, cv::Mat(),
+                   std::make_shared<map::FrameCamera>(camera, map::kDefaultVirtualBaselineM, 40.0,
+                                                      feature::ScaleLevels(8, 1.2)));
   frame.T_cw = geometry::Pose::Identity();
   frame.has_pose = true;
   return frame;

@@ -8,7 +8,8 @@ namespace {
 // A person 1.5 m away in front of a wall at 3 m, masked as dynamic in the left half of the image.
 struct PersonScene {
   core::Camera camera;
-  map::FrameCamera frame_camera{camera, 40.0, 40.0, feature::ScaleLevels(8, 1.2)};
+  map::FrameCamera frame_camera{camera, map::kDefaultVirtualBaselineM, 40.0,
+                                feature::ScaleLevels(8, 1.2)};
   cv::Mat depth{camera.height, camera.width, CV_32F, cv::Scalar(3.0f)};
   cv::Mat mask{camera.height, camera.width, CV_8U, cv::Scalar(0)};
 
