@@ -54,14 +54,6 @@ std::vector<std::pair<std::size_t, std::shared_ptr<MapPoint>>> KeyFrame::validMa
   return points;
 }
 
-int KeyFrame::trackedMapPoints(int min_observations) const {
-  int count = 0;
-  for (const auto& p : map_points_) {
-    if (p && !p->bad && p->numObservations() >= min_observations) ++count;
-  }
-  return count;
-}
-
 void KeyFrame::updateConnections() {
   std::map<KeyFrame*, int, KeyFrameIdLess> counts;
   for (const auto& p : map_points_) {

@@ -32,8 +32,6 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   // Valid (not bad) map points with their keypoint indices.
   [[nodiscard]] std::vector<std::pair<std::size_t, std::shared_ptr<MapPoint>>> validMapPoints()
       const;
-  // Number of map points observed by at least `min_observations` keyframes.
-  [[nodiscard]] int trackedMapPoints(int min_observations) const;
 
   // Recomputes covisibility edges from the map points' observations (weight >= 15 shared
   // points, or the single best keyframe when none reaches 15) and attaches the keyframe to the

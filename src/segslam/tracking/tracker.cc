@@ -15,7 +15,6 @@ namespace segslam::tracking {
 namespace {
 
 constexpr int kMinPoseMatches = 10;
-constexpr int kEstablishedObservations = 2;
 constexpr double kMotionSearchRadius = 15.0;  // pixels at level 0, as ORB-SLAM2 for RGB-D
 constexpr double kLocalMapRadius = 3.0;
 constexpr double kLocalMapRadiusAfterRelocalisation = 5.0;
@@ -70,6 +69,7 @@ TrackingResult Tracker::track(map::Frame frame) {
     velocity_ = geometry::orthonormalised(current_.T_cw * last_.T_cw.inverse());
     cullPointsSeenThrough();
     rememberPose();
+    reference_overlap_.update(reference_keyframe_->id, trackedOfReference());
     if (needNewKeyFrame()) {
       createKeyFrame();
       result.new_keyframe = true;
@@ -205,7 +205,7 @@ bool Tracker::trackLocalMap() {
   }
   const bool recently_relocalised =
       last_relocalisation_frame_id_ > 0 &&
-      current_.id < last_relocalisation_frame_id_ + options_.max_frames_between_keyframes;
+      current_.id < last_relocalisation_frame_id_ + options_.keyframes.max_frames_between_keyframes;
   const int needed =
       recently_relocalised ? options_.min_inliers_after_relocalisation : options_.min_inliers;
   return inliers_ >= needed;
@@ -310,36 +310,31 @@ void Tracker::cullPointsSeenThrough() {
   }
 }
 
+int Tracker::trackedOfReference() const {
+  int tracked = 0;
+  for (const auto& point : current_.map_points) {
+    if (point && !point->bad && point->isObservedBy(reference_keyframe_.get())) ++tracked;
+  }
+  return tracked;
+}
+
 bool Tracker::needNewKeyFrame() const {
-  const std::uint64_t since_last = current_.id - last_keyframe_frame_id_;
-  // The reference keyframe's established points (seen by two keyframes or more) are the yardstick
-  // for how much of the map the frame still tracks. Counting points seen once as well made the
-  // young map insert a keyframe every few frames; three observations (ORB-SLAM2's choice) gave
-  // too few keyframes on fr1/xyz (ATE 11.5 mm against 10.7 mm).
-  const int reference_tracked = reference_keyframe_->trackedMapPoints(kEstablishedObservations);
-  int tracked_close = 0;
-  int untracked_close = 0;
+  KeyFrameEvidence evidence;
+  evidence.inliers = inliers_;
+  evidence.tracked_share = reference_overlap_.share();
   for (std::size_t i = 0; i < current_.size(); ++i) {
     if (current_.depth[i] <= 0.0f || current_.depth[i] >= current_.camera->close_depth_m) {
       continue;
     }
-    if (hasMapPoint(current_, i)) {
-      ++tracked_close;
-    } else {
-      ++untracked_close;
-    }
+    ++(hasMapPoint(current_, i) ? evidence.tracked_close : evidence.untracked_close);
   }
-  const bool need_close = tracked_close < options_.min_close_points_tracked &&
-                          untracked_close > options_.min_close_points_untracked;
-  const bool timeout =
-      since_last >= static_cast<std::uint64_t>(options_.max_frames_between_keyframes);
-  const bool mapping_idle = sink_.isIdle();
-  const bool weak = inliers_ < 0.25 * reference_tracked || need_close;
-  const bool below_ratio =
-      inliers_ < options_.keyframe_tracked_ratio * reference_tracked || need_close;
-  if (!((timeout || mapping_idle || weak) && below_ratio && inliers_ > 15)) return false;
-  // A busy mapper would only queue the keyframe; a short queue is fine for RGB-D.
-  return mapping_idle || sink_.queuedKeyFrames() < 3;
+  evidence.frames_since_keyframe = current_.id - last_keyframe_frame_id_;
+  evidence.mapping_idle = sink_.isIdle();
+  evidence.queued_keyframes = sink_.queuedKeyFrames();
+  spdlog::debug("frame {}: reference keyframe {}: {} of {} points tracked, close {} / {}",
+                current_.id, reference_keyframe_->id, reference_overlap_.tracked(),
+                reference_overlap_.best(), evidence.tracked_close, evidence.untracked_close);
+  return needsKeyFrame(evidence, options_.keyframes);
 }
 
 void Tracker::createKeyFrame() {

@@ -9,17 +9,15 @@
 #include "segslam/map/frame.h"
 #include "segslam/map/map.h"
 #include "segslam/tracking/free_space_check.h"
+#include "segslam/tracking/keyframe_decision.h"
 #include "segslam/tracking/keyframe_sink.h"
 #include "segslam/tracking/late_mask_check.h"
 
 namespace segslam::tracking {
 
 struct TrackerOptions {
-  int min_initial_points = 500;           // keypoints with depth needed to start the map
-  int max_frames_between_keyframes = 30;  // one second at 30 Hz
-  double keyframe_tracked_ratio = 0.75;   // new keyframe when tracking falls below this share
-  int min_close_points_tracked = 100;     // ... or when too few close (depth-trusted) points
-  int min_close_points_untracked = 70;    // ... while this many close points are new
+  int min_initial_points = 500;  // keypoints with depth needed to start the map
+  KeyFrameDecisionOptions keyframes;
   int min_new_points_per_keyframe = 100;
   int max_local_keyframes = 80;
   int min_inliers = 30;
@@ -80,6 +78,7 @@ class Tracker {
   void updateLocalKeyFrames();
   void updateLocalPoints();
   int searchLocalMap();
+  int trackedOfReference() const;
   bool needNewKeyFrame() const;
   void createKeyFrame();
   void addNewMapPoints(map::KeyFrame& keyframe);
@@ -104,6 +103,7 @@ class Tracker {
   std::vector<std::shared_ptr<map::MapPoint>> local_points_;
   std::vector<std::shared_ptr<map::MapPoint>> temporary_points_;
   int inliers_ = 0;
+  ReferenceOverlap reference_overlap_;
   std::vector<FramePoseRecord> records_;
   // Poses of the last tracked frames, for late masks.
   std::deque<std::pair<std::uint64_t, geometry::Pose>> recent_poses_;
