@@ -26,9 +26,9 @@ struct LoopClosingOptions {
   std::uint64_t min_keyframes = 5;  // keyframes made (culled ones too) before loops are sought
   std::uint64_t keyframes_after_loop = 10;  // keyframes skipped after a correction
   std::size_t max_candidates = 3;           // per query keyframe, from the detector
-  // Consecutive query keyframes that must propose the same place (see ConsistencyCheck). 1: our
-  // tracker makes about 8 keyframes per full turn, so a revisited place is often seen by a single
-  // keyframe; the strict geometric verification is what keeps false loops out.
+  // Consecutive query keyframes that must propose the same place (see ConsistencyCheck). 1: a
+  // revisited place is often verified by a single keyframe (the end of a lap overlaps its start
+  // for a few keyframes only); the strict geometric verification is what keeps false loops out.
   int consecutive_queries = 1;
   std::size_t loop_local_keyframes = 10;  // the candidate's covisibles whose points verify it
   LoopVerifierOptions verifier;
