@@ -81,11 +81,21 @@ void KeyFrame::updateConnections() {
     best->addConnection(this, best_weight);
   }
   sortConnections();
-  if (first_connection_ && id != 0) {
-    parent = ordered_connections_.front();
-    parent->children.insert(this);
-    first_connection_ = false;
-  }
+  if (first_connection_ && id != 0) attachToOlderParent();
+}
+
+void KeyFrame::attachToOlderParent() {
+  // The spanning tree's parent is the strongest covisible keyframe made before this one, so the
+  // tree has no cycles: setBad() hands children to their grandparent, and pose resolution and the
+  // essential graph follow parents. (A keyframe whose first connections are all to newer ones, as
+  // when it had none at first, used to take a newer parent: a cycle, and a self-parent once one
+  // of the two went bad.) Without an older covisible it waits for a later update.
+  const auto older = std::find_if(ordered_connections_.begin(), ordered_connections_.end(),
+                                  [this](const KeyFrame* other) { return other->id < id; });
+  if (older == ordered_connections_.end()) return;
+  parent = *older;
+  parent->children.insert(this);
+  first_connection_ = false;
 }
 
 void KeyFrame::addConnection(KeyFrame* other, int weight) {

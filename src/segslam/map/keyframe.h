@@ -35,7 +35,8 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
 
   // Recomputes covisibility edges from the map points' observations (weight >= 15 shared
   // points, or the single best keyframe when none reaches 15) and attaches the keyframe to the
-  // spanning tree on its first call.
+  // spanning tree, under its strongest older covisible keyframe, on the first call that finds
+  // one.
   void updateConnections();
   void addConnection(KeyFrame* other, int weight);
   void eraseConnection(KeyFrame* other);
@@ -74,6 +75,7 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
 
  private:
   void sortConnections();
+  void attachToOlderParent();
 
   std::vector<std::shared_ptr<MapPoint>> map_points_;
   std::map<KeyFrame*, int, KeyFrameIdLess> connections_;
