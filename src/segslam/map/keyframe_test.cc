@@ -35,33 +35,38 @@ std::vector<std::shared_ptr<MapPoint>> share(KeyFrame& a, KeyFrame& b, std::size
   return points;
 }
 
+// Keyframes 0, 1 and 2, where 1 first shares points only with the newer 2, and later with 0.
+struct ThreeKeyFrames {
+  std::shared_ptr<KeyFrame> first = keyFrame(0);
+  std::shared_ptr<KeyFrame> middle = keyFrame(1);
+  std::shared_ptr<KeyFrame> last = keyFrame(2);
+  std::vector<std::shared_ptr<MapPoint>> with_last = share(*middle, *last, 0);
+  std::vector<std::shared_ptr<MapPoint>> with_first;
+
+  void connectMiddleToFirst() {
+    with_first = share(*first, *middle, kPoints);
+    middle->updateConnections();
+  }
+};
+
 TEST(KeyFrame, ItsParentIsAnOlderKeyFrameEvenWhenANewerOneIsCloser) {
-  auto first = keyFrame(0);
-  auto middle = keyFrame(1);
-  auto last = keyFrame(2);
-  const auto with_last = share(*middle, *last, 0);
-  middle->updateConnections();
-  EXPECT_EQ(middle->parent, nullptr) << "its only covisible keyframe is newer: it waits";
-  last->updateConnections();
-  EXPECT_EQ(last->parent, middle.get());
-  const auto with_first = share(*first, *middle, kPoints);
-  middle->updateConnections();
-  EXPECT_EQ(middle->parent, first.get());
+  ThreeKeyFrames keyframes;
+  keyframes.middle->updateConnections();
+  EXPECT_EQ(keyframes.middle->parent, nullptr) << "its only covisible keyframe is newer: it waits";
+  keyframes.last->updateConnections();
+  EXPECT_EQ(keyframes.last->parent, keyframes.middle.get());
+  keyframes.connectMiddleToFirst();
+  EXPECT_EQ(keyframes.middle->parent, keyframes.first.get());
 }
 
 TEST(KeyFrame, RemovingAKeyFrameHandsItsChildrenToItsParentWithoutCycles) {
-  auto first = keyFrame(0);
-  auto middle = keyFrame(1);
-  auto last = keyFrame(2);
-  const auto with_last = share(*middle, *last, 0);
-  middle->updateConnections();
-  last->updateConnections();
-  const auto with_first = share(*first, *middle, kPoints);
-  middle->updateConnections();
-  middle->setBad();
-  EXPECT_EQ(last->parent, first.get());
-  EXPECT_TRUE(first->children.contains(last.get()));
-  EXPECT_NE(last->parent, last.get());
+  ThreeKeyFrames keyframes;
+  keyframes.middle->updateConnections();
+  keyframes.last->updateConnections();
+  keyframes.connectMiddleToFirst();
+  keyframes.middle->setBad();
+  EXPECT_EQ(keyframes.last->parent, keyframes.first.get());
+  EXPECT_TRUE(keyframes.first->children.contains(keyframes.last.get()));
 }
 
 }  // namespace
