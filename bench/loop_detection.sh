@@ -3,7 +3,9 @@
 # method's flattened descriptor and our masked pooling; oracle masks and our semantic masks) on a
 # synthetic closed lap with two walking people, tum_fr1_xyz_300 and tum_fr1_xyz_300_walker, and
 # writes bench/results/loops.md (the AUC tables), loops.json and the PR plots
-# (loops_<sequence>.svg, and .png where rsvg-convert exists).
+# (loops_<sequence>.svg, and .png where rsvg-convert exists). With --every other than 5 the files
+# are named loops_every<N>* instead, so that a denser run (more loop pairs, less noisy AUC) sits
+# beside the default one.
 #
 #   bench/loop_detection.sh [--build DIR] [--out DIR] [--every N (default 5)]
 #
@@ -28,6 +30,8 @@ shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
 [[ -d "$shared/data" ]] || { echo "loop_detection.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
 results="$root/bench/results"
 mkdir -p "$out" "$results"
+base=loops
+[[ "$every" == 5 ]] || base="loops_every$every"
 
 [[ -f "$out/synth_loop/groundtruth.txt" ]] ||
   "$segslam" synth --path loop --people 2 --frames 300 --seed 1 --out "$out/synth_loop" >/dev/null
@@ -45,8 +49,8 @@ sequences=(
   echo "\`bench/loop_detection.sh --every $every\`: \`segslam eval loops\` with the default thresholds"
   echo "(0.3 m, 20 deg, pairs at least 5 s apart). Machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores."
   echo
-} > "$results/loops.md"
-echo "[" > "$results/loops.json"
+} > "$results/$base.md"
+echo "[" > "$results/$base.json"
 separator=""
 for sequence in "${sequences[@]}"; do
   IFS='|' read -r name dataset <<< "$sequence"
@@ -55,14 +59,14 @@ for sequence in "${sequences[@]}"; do
   echo "== $name (masks: ${masks[*]})"
   "$segslam" --log-level warn eval loops --dataset "$dataset" --every "$every" \
     --masks "${masks[@]}" --out "$out/$name" >/dev/null
-  cat "$out/$name/loops.md" >> "$results/loops.md"
-  echo >> "$results/loops.md"
-  { printf '%s' "$separator"; cat "$out/$name/loops.json"; } >> "$results/loops.json"
+  cat "$out/$name/loops.md" >> "$results/$base.md"
+  echo >> "$results/$base.md"
+  { printf '%s' "$separator"; cat "$out/$name/loops.json"; } >> "$results/$base.json"
   separator=","
-  cp "$out/$name/pr_curves.svg" "$results/loops_$name.svg"
+  cp "$out/$name/pr_curves.svg" "$results/${base}_$name.svg"
   if command -v rsvg-convert >/dev/null; then
-    rsvg-convert "$results/loops_$name.svg" -o "$results/loops_$name.png"
+    rsvg-convert "$results/${base}_$name.svg" -o "$results/${base}_$name.png"
   fi
 done
-echo "]" >> "$results/loops.json"
-cat "$results/loops.md"
+echo "]" >> "$results/$base.json"
+cat "$results/$base.md"
