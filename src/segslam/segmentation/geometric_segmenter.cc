@@ -135,8 +135,9 @@ cv::Mat GeometricSegmenter::segment(const DepthFrame& previous, const DepthFrame
   trackCorners(previous, current, options_.max_corners, tracks.previous_raw, tracks.current_raw);
   tracks.previous_un = core::undistortPixels(tracks.previous_raw, camera_);
   tracks.current_un = core::undistortPixels(tracks.current_raw, camera_);
-  for (const cv::Point2f& p : tracks.current_raw) {
-    tracks.known_dynamic.push_back(feature::isDynamicAt(known_dynamic, p));
+  for (std::size_t i = 0; i < tracks.current_raw.size(); ++i) {
+    tracks.known_dynamic.push_back(feature::isDynamicAt(known_dynamic, tracks.current_raw[i]) ||
+                                   feature::isDynamicAt(previous.moving, tracks.previous_raw[i]));
   }
   tracks.previous_depth = previous.depth;
   tracks.current_depth = current.depth;

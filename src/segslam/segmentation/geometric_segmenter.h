@@ -37,6 +37,8 @@ struct GeometricOptions {
 struct DepthFrame {
   cv::Mat gray;   // CV_8UC1
   cv::Mat depth;  // CV_32FC1 metres, 0 = none
+  // Of a previous frame: what was found moving in it (CV_8UC1, non-zero = moving; may be empty).
+  cv::Mat moving{};
 };
 
 // Finds whatever moves between two RGB-D frames, of any class: corners of the current frame are
@@ -50,8 +52,11 @@ class GeometricSegmenter {
   explicit GeometricSegmenter(const core::Camera& camera, GeometricOptions options = {});
 
   // Dynamic mask (CV_8UC1, 255 = moving) of `current`. `known_dynamic` (may be empty) marks
-  // pixels already known to move (e.g. people from the semantic network): they are left out of
-  // the camera-motion estimate. Empty result when too little is tracked to tell.
+  // pixels of `current` already known to move (e.g. people from the semantic network), and
+  // `previous.moving` what moved in the previous frame: corners on either are left out of the
+  // camera-motion estimate. A person who covers much of the view and has many corners can
+  // otherwise outvote the background in RANSAC, so that the camera seems to move with him and the
+  // background to move instead. Empty result when too little is tracked to tell.
   cv::Mat segment(const DepthFrame& previous, const DepthFrame& current,
                   const cv::Mat& known_dynamic = cv::Mat()) const;
 

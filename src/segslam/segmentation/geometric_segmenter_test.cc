@@ -91,6 +91,33 @@ TEST(GeometricSegmenter, KnownDynamicPixelsAreLeftOutOfTheCameraMotion) {
   EXPECT_LT(cv::countNonZero(dynamic & background), 0.01 * wall.total());
 }
 
+// A mover that holds most of the corners (a near box, its texture stronger than the wall's): RANSAC
+// then takes its motion for the camera's, and the box is lost. Told what moved in the previous
+// frame, the segmenter estimates the camera motion from the rest and finds the box.
+TEST(GeometricSegmenter, WhatMovedInThePreviousFrameIsLeftOutOfTheCameraMotion) {
+  cv::Mat wall = texture({640, 480}, 10);
+  wall.convertTo(wall, CV_8UC1, 0.6, 50.0);
+  const cv::Mat box = texture({300, 240}, 11);
+  DepthFrame previous = scene(100, wall, box);
+  const DepthFrame current = scene(116, wall, box);
+  cv::Mat truth = cv::Mat::zeros(wall.size(), CV_8UC1);
+  truth(cv::Rect(116, 180, 300, 240)).setTo(255);
+  auto found = [&](const cv::Mat& dynamic) {
+    return dynamic.empty()
+               ? 0.0
+               : cv::countNonZero(dynamic & truth) / static_cast<double>(cv::countNonZero(truth));
+  };
+  const GeometricSegmenter segmenter(pinhole());
+  EXPECT_LT(found(segmenter.segment(previous, current)), 0.5);
+
+  previous.moving = cv::Mat::zeros(wall.size(), CV_8UC1);
+  previous.moving(cv::Rect(100, 180, 300, 240)).setTo(255);
+  const cv::Mat dynamic = segmenter.segment(previous, current);
+  ASSERT_FALSE(dynamic.empty());
+  EXPECT_GT(found(dynamic), 0.9);
+  EXPECT_LT(cv::countNonZero(dynamic & ~truth), 0.01 * wall.total());
+}
+
 // A static table top (one depth-connected region) with a small patch of its texture sliding:
 // the few corners on the patch are outvoted by the many the camera motion explains, so the
 // table is not masked. Without the share rule the same seeds mask the whole table, which is

@@ -65,13 +65,29 @@ segmentation::DepthFrame depthFrame(const segmentation::StreamFrame& frame) {
   return depth_frame;
 }
 
+// The geometric segmenter's last output, as a prior for the next frame it compares.
+struct LastMoving {
+  std::uint64_t frame_id = 0;
+  cv::Mat moving;
+};
+
+// An output this many frames older than the previous frame of a job still tells roughly where
+// things moved: the thread of a threaded stream does not get every frame.
+constexpr std::uint64_t kMaxMovingPriorAge = 3;
+
 segmentation::Segment geometricSegment(const core::Camera& camera,
                                        const segmentation::GeometricOptions& options) {
   auto segmenter = std::make_shared<segmentation::GeometricSegmenter>(camera, options);
-  return [segmenter](const segmentation::SegmentationJob& job) {
+  auto last = std::make_shared<LastMoving>();
+  return [segmenter, last](const segmentation::SegmentationJob& job) {
     if (job.previous.bgr.empty()) return segmentation::SemanticMasks{};
-    cv::Mat dynamic =
-        segmenter->segment(depthFrame(job.previous), depthFrame(job.current), job.known_dynamic);
+    segmentation::DepthFrame previous = depthFrame(job.previous);
+    if (!last->moving.empty() && last->frame_id <= job.previous.id &&
+        job.previous.id - last->frame_id <= kMaxMovingPriorAge) {
+      previous.moving = last->moving;
+    }
+    cv::Mat dynamic = segmenter->segment(previous, depthFrame(job.current), job.known_dynamic);
+    if (!dynamic.empty()) *last = {job.current.id, dynamic};
     return segmentation::SemanticMasks{dynamic, dynamic};
   };
 }
