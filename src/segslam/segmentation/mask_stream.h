@@ -32,8 +32,8 @@ struct MaskStreamOptions {
   int thread_niceness = 19;
   // While tracking is busy computing (setTrackingBusyShare() at or above `busy_share_limit`:
   // offline playback as fast as frames load), the segmenter thread takes a frame only every
-  // `busy_interval` frames, since every run takes CPU that tracking needs (a network costs
-  // 150-200 ms on 2 cores). Tracking that waits for its frames (a camera) leaves CPU to spare:
+  // `busy_interval` frames, since every run takes CPU that tracking needs (ESPNetv2: 60 ms on 2
+  // idle cores, 100-300 ms beside tracking). Tracking that waits for its frames (a camera) leaves CPU to spare:
   // the segmenter then runs whenever it is free. (Walker, fast playback: every 30 / 45 / 60
   // frames gives 75 / 78 / 81 % of the frame rate without masks; at 60 frames the masks are
   // too stale: ATE 0.107 against 0.023 m.)
@@ -83,7 +83,7 @@ struct LateOutput {
   cv::Mat depth;    // CV_32FC1 metres of that frame, or empty
 };
 
-// Masks for every frame without waiting for a slow segmenter (a 150-200 ms network, geometric
+// Masks for every frame without waiting for a slow segmenter (a 60-300 ms network, geometric
 // segmentation): the newest finished output is carried to the current frame by optical flow
 // (MaskPropagator) and snapped to the objects' depth outlines. The segmenter runs on its own
 // thread, one frame in flight. Only the first frame waits for its own output, so that the map

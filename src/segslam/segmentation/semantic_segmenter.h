@@ -5,6 +5,7 @@
 #include <opencv2/dnn.hpp>
 #include <vector>
 
+#include "segslam/segmentation/fast_dnn_layers.h"
 #include "segslam/segmentation/model_config.h"
 
 namespace segslam::segmentation {
@@ -34,6 +35,7 @@ class SemanticSegmenter {
 
   ModelConfig config_;
   std::vector<int> dynamic_indices_;
+  FastDnnLayers fast_layers_;  // before net_: the net is built with them
   cv::dnn::Net net_;
 };
 
