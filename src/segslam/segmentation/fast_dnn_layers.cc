@@ -51,46 +51,60 @@ bool swapsInnermostTwo(const std::vector<int>& order) {
          order[static_cast<std::size_t>(dims - 1)] == dims - 2;
 }
 
-std::pair<std::vector<cv::Mat>, std::vector<cv::Mat>> blobsOf(cv::InputArrayOfArrays inputs,
-                                                              cv::OutputArrayOfArrays outputs) {
-  std::pair<std::vector<cv::Mat>, std::vector<cv::Mat>> blobs;
-  inputs.getMatVector(blobs.first);
-  outputs.getMatVector(blobs.second);
-  CV_Assert(!blobs.first.empty() && blobs.second.size() == 1);
-  CV_Assert(blobs.first[0].type() == CV_32F && blobs.first[0].isContinuous());
-  CV_Assert(blobs.second[0].type() == CV_32F && blobs.second[0].isContinuous());
-  return blobs;
-}
-
-class PermuteByBlocks : public cv::dnn::Layer {
+// A layer of one float blob in and one out, computed into the blob the net allocated.
+class OneBlobLayer : public cv::dnn::Layer {
  public:
-  PermuteByBlocks(const LayerParams& params, std::vector<int> order)
-      : Layer(params), order_(std::move(order)) {}
+  using cv::dnn::Layer::Layer;
 
   bool getMemoryShapes(const std::vector<MatShape>& inputs, const int /*required_outputs*/,
                        std::vector<MatShape>& outputs,
                        std::vector<MatShape>& /*internals*/) const override {
-    CV_Assert(inputs.size() == 1 && inputs[0].size() == order_.size());
-    MatShape shape(order_.size());
-    for (std::size_t axis = 0; axis < order_.size(); ++axis) {
-      shape[axis] = inputs[0][static_cast<std::size_t>(order_[axis])];
-    }
-    outputs.assign(1, shape);
+    CV_Assert(inputs.size() == 1);
+    outputs.assign(1, outputShape(inputs[0]));
     return false;
   }
 
   using cv::dnn::Layer::forward;
   void forward(cv::InputArrayOfArrays inputs, cv::OutputArrayOfArrays outputs,
                cv::OutputArrayOfArrays /*internals*/) override {
-    auto [in, out] = blobsOf(inputs, outputs);
-    if (swapsInnermostTwo(order_)) {
-      transposePlanes(in[0], out[0]);
-    } else {
-      copyBlocks(in[0], out[0]);
-    }
+    std::vector<cv::Mat> in;
+    std::vector<cv::Mat> out;
+    inputs.getMatVector(in);
+    outputs.getMatVector(out);
+    CV_Assert(in.size() == 1 && out.size() == 1);
+    CV_Assert(in[0].type() == CV_32F && in[0].isContinuous());
+    CV_Assert(out[0].type() == CV_32F && out[0].isContinuous());
+    compute(in[0], out[0]);
   }
 
  private:
+  [[nodiscard]] virtual MatShape outputShape(const MatShape& input) const = 0;
+  virtual void compute(const cv::Mat& input, cv::Mat& output) const = 0;
+};
+
+class PermuteByBlocks : public OneBlobLayer {
+ public:
+  PermuteByBlocks(const LayerParams& params, std::vector<int> order)
+      : OneBlobLayer(params), order_(std::move(order)) {}
+
+ private:
+  [[nodiscard]] MatShape outputShape(const MatShape& input) const override {
+    CV_Assert(input.size() == order_.size());
+    MatShape shape(order_.size());
+    for (std::size_t axis = 0; axis < order_.size(); ++axis) {
+      shape[axis] = input[static_cast<std::size_t>(order_[axis])];
+    }
+    return shape;
+  }
+
+  void compute(const cv::Mat& input, cv::Mat& output) const override {
+    if (swapsInnermostTwo(order_)) {
+      transposePlanes(input, output);
+    } else {
+      copyBlocks(input, output);
+    }
+  }
+
   static void transposePlanes(const cv::Mat& input, cv::Mat& output) {
     const int rows = input.size[input.dims - 2];
     const int cols = input.size[input.dims - 1];
@@ -159,10 +173,10 @@ Samples alignedCornerSamples(int in, int out) {
   return samples;
 }
 
-class AlignedCornersBilinearResize : public cv::dnn::Layer {
+class AlignedCornersBilinearResize : public OneBlobLayer {
  public:
   explicit AlignedCornersBilinearResize(const LayerParams& params)
-      : Layer(params),
+      : OneBlobLayer(params),
         height_(params.get<int>("height", 0)),
         width_(params.get<int>("width", 0)),
         zoom_y_(params.get<float>("zoom_factor_y", 0.f)),
@@ -177,24 +191,17 @@ class AlignedCornersBilinearResize : public cv::dnn::Layer {
            !params.get<bool>("half_pixel_centers", false);
   }
 
-  bool getMemoryShapes(const std::vector<MatShape>& inputs, const int /*required_outputs*/,
-                       std::vector<MatShape>& outputs,
-                       std::vector<MatShape>& /*internals*/) const override {
-    CV_Assert(inputs.size() == 1 && inputs[0].size() == 4);
-    MatShape shape = inputs[0];
+ private:
+  [[nodiscard]] MatShape outputShape(const MatShape& input) const override {
+    CV_Assert(input.size() == 4);
+    MatShape shape = input;
     // A zoom factor wins over a size, as in OpenCV's layer.
     shape[2] = zoom_y_ > 0.f ? static_cast<int>(static_cast<float>(shape[2]) * zoom_y_) : height_;
     shape[3] = zoom_x_ > 0.f ? static_cast<int>(static_cast<float>(shape[3]) * zoom_x_) : width_;
-    outputs.assign(1, shape);
-    return false;
+    return shape;
   }
 
-  using cv::dnn::Layer::forward;
-  void forward(cv::InputArrayOfArrays inputs, cv::OutputArrayOfArrays outputs,
-               cv::OutputArrayOfArrays /*internals*/) override {
-    auto [in, out] = blobsOf(inputs, outputs);
-    const cv::Mat& input = in[0];
-    cv::Mat& output = out[0];
+  void compute(const cv::Mat& input, cv::Mat& output) const override {
     const int in_rows = input.size[2];
     const int in_cols = input.size[3];
     const int out_rows = output.size[2];
@@ -225,7 +232,6 @@ class AlignedCornersBilinearResize : public cv::dnn::Layer {
     });
   }
 
- private:
   int height_;
   int width_;
   float zoom_y_;
