@@ -8,4 +8,5 @@ scripts/install_deps.sh
 scripts/build_web.sh
 scripts/build.sh build
 ./build/segslam synth --out out/demo_sequence --seed 1
-./build/segslam run --dataset out/demo_sequence --out out/demo_run
+# Geometric masks need no model, so the run is the same with or without ../shared beside it.
+./build/segslam run --dataset out/demo_sequence --out out/demo_run --seg geometric

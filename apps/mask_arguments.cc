@@ -1,15 +1,29 @@
 #include "mask_arguments.h"
 
+#include <spdlog/spdlog.h>
+
 namespace segslam::apps {
+
+namespace {
+
+std::vector<std::string> allowedSources() {
+  std::vector<std::string> names = {"auto"};
+  const auto sources = system::maskSourceNames();
+  names.insert(names.end(), sources.begin(), sources.end());
+  return names;
+}
+
+}  // namespace
 
 void addMaskOptions(CLI::App& command, MaskArguments& arguments) {
   command
       .add_option("--seg", arguments.source,
-                  "Dynamic masks: none, oracle (the dataset's ground-truth mask.txt), semantic "
-                  "(a segmentation network, see --model-config), geometric (whatever the camera "
+                  "Dynamic masks: auto (fused when the segmentation network is found, else "
+                  "geometric), none, oracle (the dataset's ground-truth mask.txt), semantic (a "
+                  "segmentation network, see --model-config), geometric (whatever the camera "
                   "motion does not explain) or fused (semantic, then geometric)")
       ->capture_default_str()
-      ->check(CLI::IsMember(system::maskSourceNames()));
+      ->check(CLI::IsMember(allowedSources()));
   arguments.model_config =
       std::filesystem::path(SEGSLAM_CONFIG_DIR) / "models" / "espnetv2_voc_384.yaml";
   command
@@ -41,11 +55,16 @@ void addMaskOptions(CLI::App& command, MaskArguments& arguments) {
       ->check(CLI::Range(0, 60));
 }
 
-system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments) {
+system::MaskSourceOptions maskSourceOptions(MaskArguments& arguments) {
   system::MaskSourceOptions options;
-  options.source = system::maskSourceFromName(arguments.source);
   options.model_config = arguments.model_config;
   if (!arguments.model_file.empty()) options.model_file = arguments.model_file;
+  if (arguments.source == "auto") {
+    const auto automatic = system::automaticMaskSource(options);
+    arguments.source = system::maskSourceName(automatic.source);
+    spdlog::info("masks: {} ({}; --seg picks others)", arguments.source, automatic.reason);
+  }
+  options.source = system::maskSourceFromName(arguments.source);
   options.network_interval = arguments.network_interval;
   options.network_latency = arguments.network_latency;
   options.geometric.motion_model = segmentation::cameraMotionModelFromName(arguments.camera_motion);

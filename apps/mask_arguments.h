@@ -9,7 +9,7 @@ namespace segslam::apps {
 
 // Where dynamic masks come from, shared by `run` and `eval masks`.
 struct MaskArguments {
-  std::string source = "none";
+  std::string source = "auto";
   std::string model_file;
   std::filesystem::path model_config;
   std::string camera_motion = "rigid";
@@ -20,6 +20,8 @@ struct MaskArguments {
 // Adds --seg, --model-config, --model, --camera-motion and --network-interval to `command`.
 void addMaskOptions(CLI::App& command, MaskArguments& arguments);
 
-system::MaskSourceOptions maskSourceOptions(const MaskArguments& arguments);
+// The options the arguments give. `--seg auto` (the default) becomes the source
+// system::automaticMaskSource picks, and `arguments.source` names it from then on.
+system::MaskSourceOptions maskSourceOptions(MaskArguments& arguments);
 
 }  // namespace segslam::apps

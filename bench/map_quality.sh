@@ -3,7 +3,7 @@
 #
 #   bench/map_quality.sh [--build DIR] [--out DIR] [--runs N] [--part all|quality|cost|objects]
 #
-# - quality (bench/results/maps.md, maps.json): `segslam run` (threaded, as users run it) on a
+# - quality (bench/results/maps.md, maps.json): `segslam run --fast` (threaded) on a
 #   rendered synthetic sequence with two walking people and on tum_fr1_xyz_300_walker, each with
 #   oracle masks and without masks, then `segslam eval map`: share of static-map points on the
 #   moving people (within 3 cm of their ground-truth depth), completeness and accuracy against the
@@ -12,7 +12,7 @@
 #   path, shows how much of the true scene lies in that band anyway.
 # - cost (bench/results/map_overhead.md, map_overhead.json): tum_fr1_xyz_300, threaded, N times
 #   with the map and N times with --no-map (alternating, default 3 each): process wall and CPU
-#   time, peak RSS, medians, the machine's load average around each run, and where the map's
+#   time, peak RSS, medians (played fast), the machine's load average around each run, and where the map's
 #   time goes.
 # - objects (bench/results/map_objects.md, map_objects.json): `segslam run --seg semantic
 #   --deterministic` on tum_fr1_xyz_300 and the walker: the objects the network's labels give, and
@@ -83,11 +83,11 @@ quality() {
     "$segslam" synth --out "$out/synth_people" --seed 1 --people 2 >/dev/null
   results="$out/quality.jsonl"
   : > "$results"
-  measure "synth people oracle" "$out/synth_people" oracle "$out/synth_people"
-  measure "synth people masks off" "$out/synth_people" none "$out/synth_people"
-  measure "walker oracle" "$walker" oracle "$walker"
-  measure "walker masks off" "$walker" none "$walker"
-  measure "fr1_xyz_300 (no person) vs walker path" "$shared/data/tum_fr1_xyz_300" none "$walker"
+  measure "synth people oracle" "$out/synth_people" oracle "$out/synth_people" --fast
+  measure "synth people masks off" "$out/synth_people" none "$out/synth_people" --fast
+  measure "walker oracle" "$walker" oracle "$walker" --fast
+  measure "walker masks off" "$walker" none "$walker" --fast
+  measure "fr1_xyz_300 (no person) vs walker path" "$shared/data/tum_fr1_xyz_300" none "$walker" --fast
   python3 - "$results" "$root/bench/results" "$cpu_name" <<'PY'
 import json, os, sys
 rows = [json.loads(line) for line in open(sys.argv[1])]
@@ -125,8 +125,8 @@ cost() {
   results="$out/cost.jsonl"
   : > "$results"
   for run in $(seq 1 "$runs"); do
-    measure "cost map $run" "$shared/data/tum_fr1_xyz_300" none ""
-    measure "cost no-map $run" "$shared/data/tum_fr1_xyz_300" none "" --no-map
+    measure "cost map $run" "$shared/data/tum_fr1_xyz_300" none "" --fast
+    measure "cost no-map $run" "$shared/data/tum_fr1_xyz_300" none "" --fast --no-map
   done
   python3 - "$results" "$root/bench/results" "$runs" "$cpu_name" <<'PY'
 import json, os, statistics, sys

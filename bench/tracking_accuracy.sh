@@ -4,8 +4,8 @@
 #
 #   bench/tracking_accuracy.sh [--build DIR] [--out DIR] [--runs N]
 #
-# Runs `segslam run` in its normal threaded mode (tracking and local mapping on their own
-# threads, as a user runs it), N times per configuration (default 3), and reports the median run
+# Runs `segslam run --fast` threaded (tracking and local mapping on their own threads, frames as
+# fast as they load), N times per configuration (default 3), and reports the median run
 # by ATE. Needs ../shared beside the project (or SEGSLAM_SHARED_DIR) for the real sequences; the
 # synthetic ones are rendered by `segslam synth` into the output folder.
 set -euo pipefail
@@ -52,7 +52,7 @@ for configuration in "${configurations[@]}"; do
   for run in $(seq 1 "$runs"); do
     run_dir="$out/runs/${name// /_}_$run"
     echo "== $name, run $run/$runs"
-    "$segslam" --log-level warn run --dataset "$dataset" --seg "$masks" --out "$run_dir" >/dev/null
+    "$segslam" --log-level warn run --dataset "$dataset" --seg "$masks" --out "$run_dir" --fast >/dev/null
     python3 - "$name" "$run_dir/summary.json" >> "$results" <<'EOF'
 import json, sys
 summary = json.load(open(sys.argv[2]))

@@ -101,4 +101,6 @@ SemanticMasks SemanticSegmenter::segment(const cv::Mat& bgr) {
   return masks;
 }
 
+void SemanticSegmenter::warmUp() { segment(cv::Mat::zeros(config_.input_size, CV_8UC3)); }
+
 }  // namespace segslam::segmentation

@@ -27,6 +27,11 @@ class SemanticSegmenter {
   // bgr: CV_8UC3. Not thread-safe (the network keeps state): one segmenter per thread.
   SemanticMasks segment(const cv::Mat& bgr);
 
+  // One pass over a blank input. OpenCV sets the network's layers up on its first pass, which
+  // takes about 1.6 times as long as later ones: a live pipeline pays it here, at setup, rather
+  // than on the first frame, which waits for its mask.
+  void warmUp();
+
   [[nodiscard]] const ModelConfig& config() const { return config_; }
 
  private:

@@ -76,6 +76,19 @@ TEST(SemanticSegmenter, FindsThePeopleInRealTumFrames) {
   }
 }
 
+// The warm-up pass over a blank image leaves no trace: a warmed network labels a frame exactly as
+// a fresh one does.
+TEST(SemanticSegmenter, WarmUpDoesNotChangeTheLabels) {
+  SEGSLAM_REQUIRE_SHARED(frames, "tum_walking_xyz_frames");
+  const RealPersonFrame frame = loadRealPersonFrame(frames, "1341846313.592026");
+  ASSERT_FALSE(frame.bgr.empty());
+  SemanticSegmenter fresh = espnetSegmenter();
+  SemanticSegmenter warmed = espnetSegmenter();
+  warmed.warmUp();
+  EXPECT_EQ(cv::countNonZero(fresh.segment(frame.bgr).labels != warmed.segment(frame.bgr).labels),
+            0);
+}
+
 // The segmentation issue's target (at least 90 % of the person area, under 5 % of the rest) on
 // the frame whose people are intact (one seated, one standing), with the mask as SLAM uses it:
 // dilated by the extractor's margin, as the dataset's person area is dilated too.

@@ -47,6 +47,22 @@ std::string maskSourceName(MaskSource source) {
   return "none";
 }
 
+AutomaticMaskSource automaticMaskSource(const MaskSourceOptions& options) {
+  const auto config = segmentation::readModelConfig(options.model_config);
+  if (options.model_file) {
+    return {MaskSource::kFused,
+            fmt::format("segmentation network {} (named)", options.model_file->string())};
+  }
+  try {
+    const auto model =
+        segmentation::resolveModelFile(config, options.model_config, options.model_file);
+    return {MaskSource::kFused,
+            fmt::format("segmentation network {}", model.lexically_normal().string())};
+  } catch (const util::Error& e) {
+    return {MaskSource::kGeometric, e.what()};
+  }
+}
+
 namespace {
 
 segmentation::Segment semanticSegment(const MaskSourceOptions& options,
@@ -54,6 +70,7 @@ segmentation::Segment semanticSegment(const MaskSourceOptions& options,
   const auto model =
       segmentation::resolveModelFile(config, options.model_config, options.model_file);
   auto segmenter = std::make_shared<segmentation::SemanticSegmenter>(config, model);
+  segmenter->warmUp();
   return [segmenter](const segmentation::SegmentationJob& job) {
     return segmenter->segment(job.current.bgr);
   };

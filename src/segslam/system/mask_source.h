@@ -42,6 +42,15 @@ struct MaskSourceOptions {
   bool carry_labels = true;
 };
 
+// The masks used when none are asked for: fused when the segmentation network is found, else
+// geometric, which needs no model. A network named in `options.model_file` is taken as found
+// (loading it reports what is wrong with it); a broken model config is an error, not a fallback.
+struct AutomaticMaskSource {
+  MaskSource source = MaskSource::kGeometric;
+  std::string reason;  // which network was found, or why none was
+};
+AutomaticMaskSource automaticMaskSource(const MaskSourceOptions& options);
+
 // One frame's masks and the labels its map points get.
 struct FrameMasks {
   cv::Mat dynamic;    // CV_8UC1, 255 = dynamic; empty = none

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "segslam/testing/test_support.h"
 #include "segslam/util/error.h"
 
@@ -64,6 +66,57 @@ TEST(FrameMaskSource, OracleWithoutMaskListFailsNamingIt) {
   } catch (const util::Error& e) {
     EXPECT_NE(std::string(e.what()).find("mask.txt"), std::string::npos) << e.what();
   }
+}
+
+const std::filesystem::path kShippedModelConfig =
+    std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config/models/espnetv2_voc_384.yaml";
+
+// Mask options whose model config is like the shipped one but names `model` as its network.
+MaskSourceOptions withNetworkAt(const std::filesystem::path& dir,
+                                const std::filesystem::path& model) {
+  std::ifstream shipped(kShippedModelConfig);
+  MaskSourceOptions options;
+  options.model_config = dir / "net.yaml";
+  std::ofstream config(options.model_config);
+  for (std::string line; std::getline(shipped, line);) {
+    config << (line.starts_with("  model: ") ? "  model: " + model.string() : line) << "\n";
+  }
+  return options;
+}
+
+TEST(AutomaticMaskSource, FusedWhenTheNetworkIsFound) {
+  const auto shared = testing::sharedDir();
+  const auto model = shared ? *shared / "models" / "espnetv2_voc_384.onnx" : "";
+  if (!shared || !std::filesystem::exists(model)) GTEST_SKIP() << "../shared/models not found";
+  const testing::ScopedTempDir dir;
+  const auto automatic = automaticMaskSource(withNetworkAt(dir.path(), model));
+  EXPECT_EQ(automatic.source, MaskSource::kFused) << automatic.reason;
+  EXPECT_NE(automatic.reason.find(model.lexically_normal().string()), std::string::npos)
+      << automatic.reason;
+}
+
+TEST(AutomaticMaskSource, GeometricWhenTheNetworkIsMissing) {
+  const testing::ScopedTempDir dir;
+  const auto automatic = automaticMaskSource(withNetworkAt(dir.path(), dir.path() / "no.onnx"));
+  EXPECT_EQ(automatic.source, MaskSource::kGeometric);
+  EXPECT_NE(automatic.reason.find("not found"), std::string::npos) << automatic.reason;
+}
+
+// A network the user names must load: a missing one fails when it is loaded, naming the file,
+// rather than quietly giving geometric masks.
+TEST(AutomaticMaskSource, ANamedNetworkCountsAsFound) {
+  const testing::ScopedTempDir dir;
+  MaskSourceOptions options = withNetworkAt(dir.path(), dir.path() / "no.onnx");
+  options.model_file = dir.path() / "named.onnx";
+  EXPECT_EQ(automaticMaskSource(options).source, MaskSource::kFused);
+}
+
+TEST(AutomaticMaskSource, ABrokenModelConfigIsAnError) {
+  const testing::ScopedTempDir dir;
+  MaskSourceOptions options;
+  options.model_config = dir.path() / "broken.yaml";
+  std::ofstream(options.model_config) << "segmentation_model: [unclosed\n";
+  EXPECT_THROW(automaticMaskSource(options), util::Error);
 }
 
 }  // namespace

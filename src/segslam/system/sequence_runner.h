@@ -49,6 +49,11 @@ struct SequenceRunSummary {
   TimingSummary extraction;
   double wall_seconds = 0.0;       // frame loading included
   double frames_per_second = 0.0;  // end to end
+  // From the first frame taken to the last frame tracked: what tracking sustains, without the
+  // setup before (loading networks) and the mapping, loop closing and global BA it leaves to
+  // finish after the last frame.
+  double tracking_seconds = 0.0;
+  double tracking_frames_per_second = 0.0;
   // Realtime playback: how far the processing of a frame started after the frame's arrival.
   bool realtime = false;
   TimingSummary realtime_lag;

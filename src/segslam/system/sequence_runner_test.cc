@@ -93,6 +93,10 @@ TEST(SequenceRunner, RealtimePlaybackKeepsToTheSequencesTimestamps) {
   const double duration = dataset.frames().back().timestamp - dataset.frames().front().timestamp;
   EXPECT_GT(duration, 0.5);
   EXPECT_GE(summary.wall_seconds, duration);
+  // The tracking span runs from the first frame taken to the last one tracked, within the run.
+  EXPECT_GE(summary.tracking_seconds, duration);
+  EXPECT_LE(summary.tracking_seconds, summary.wall_seconds);
+  EXPECT_NEAR(summary.tracking_frames_per_second, 45 / summary.tracking_seconds, 1e-9);
   EXPECT_TRUE(summary.realtime);
   EXPECT_EQ(summary.tracked_frames, 45u);
   EXPECT_GE(summary.realtime_lag.max_ms, 0.0);
