@@ -54,8 +54,7 @@ AutomaticMaskSource automaticMaskSource(const MaskSourceOptions& options) {
             fmt::format("segmentation network {} (named)", options.model_file->string())};
   }
   try {
-    const auto model =
-        segmentation::resolveModelFile(config, options.model_config, options.model_file);
+    const auto model = segmentation::resolveModelFile(config, options.model_config, std::nullopt);
     return {MaskSource::kFused,
             fmt::format("segmentation network {}", model.lexically_normal().string())};
   } catch (const util::Error& e) {
