@@ -113,6 +113,10 @@ SemanticMasks MaskStream::masksFor(std::uint64_t frame_id, const cv::Mat& bgr, c
   previous_ = job.current;
   SemanticMasks masks = carryLatest(frame_id, bgr.size());
   masks.dynamic = fitToObjects(masks.dynamic, depth, frame_id);
+  if (options_.border_linger_frames > 0) {
+    const cv::Mat lingering = lingeringObjects(masks.dynamic, depth, frame_id);
+    if (!lingering.empty()) masks.dynamic |= lingering;
+  }
   return masks;
 }
 
@@ -160,6 +164,82 @@ SemanticMasks MaskStream::carryLatest(std::uint64_t frame_id, cv::Size size) {
   carried_->frame_id = frame_id;
   carried_->masks = masks;
   return {masks.labels.clone(), masks.dynamic.clone()};
+}
+
+namespace {
+
+// The connected parts of `mask` that touch the image border and that `other` covers less than a
+// fifth of.
+cv::Mat borderPartsOutside(const cv::Mat& mask, const cv::Mat& other) {
+  cv::Mat labels;
+  cv::Mat stats;
+  cv::Mat centroids;
+  const int count = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
+  cv::Mat parts = cv::Mat::zeros(mask.size(), CV_8UC1);
+  for (int label = 1; label < count; ++label) {
+    const int x = stats.at<int>(label, cv::CC_STAT_LEFT);
+    const int y = stats.at<int>(label, cv::CC_STAT_TOP);
+    const int right = x + stats.at<int>(label, cv::CC_STAT_WIDTH);
+    const int bottom = y + stats.at<int>(label, cv::CC_STAT_HEIGHT);
+    if (x > 0 && y > 0 && right < mask.cols && bottom < mask.rows) continue;
+    const cv::Mat part = labels == label;
+    const int area = stats.at<int>(label, cv::CC_STAT_AREA);
+    if (5 * cv::countNonZero(part & other) < area) parts |= part;
+  }
+  return parts;
+}
+
+bool touchesBorder(const cv::Mat& mask) {
+  return cv::countNonZero(mask.row(0)) + cv::countNonZero(mask.row(mask.rows - 1)) +
+             cv::countNonZero(mask.col(0)) + cv::countNonZero(mask.col(mask.cols - 1)) >
+         0;
+}
+
+}  // namespace
+
+cv::Mat MaskStream::lingeringObjects(const cv::Mat& fitted, const cv::Mat& depth,
+                                     std::uint64_t frame_id) {
+  if (lingering_) {
+    cv::Mat moved = propagator_->moveObjects(lingering_->dynamic, lingering_->frame_id);
+    if (!moved.empty() && !depth.empty()) {
+      // Snapped to the object's depth as a carried output is. A lost object's mask that grows
+      // well beyond its area has joined a larger surface at its depth (the desk the person
+      // stood in front of): the person is gone. (The lost part may be a little short of the
+      // object, hence the margin.)
+      moved = refineMaskByDepth(moved, depth, options_.growth_px_per_frame + options_.min_band_px,
+                                lingering_->object_depths, options_.refinement);
+      if (2 * cv::countNonZero(moved) > 3 * lingering_->area) moved = cv::Mat();
+    }
+    lingering_->frame_id = frame_id;
+    lingering_->dynamic = moved.empty() ? moved : cv::Mat(moved & ~fitted);
+    if (moved.empty() ||
+        frame_id - lingering_->seen_id >
+            static_cast<std::uint64_t>(options_.border_linger_frames) ||
+        !touchesBorder(lingering_->dynamic)) {
+      lingering_.reset();
+    }
+  }
+  if (last_fitted_ && last_fitted_->source_id != latest_->frame_id) {
+    addLostObjects(fitted, depth, frame_id);
+  }
+  last_fitted_ = Carried{latest_->frame_id, frame_id, {cv::Mat(), fitted.clone()}};
+  return lingering_ ? lingering_->dynamic : cv::Mat();
+}
+
+void MaskStream::addLostObjects(const cv::Mat& fitted, const cv::Mat& depth,
+                                std::uint64_t frame_id) {
+  const cv::Mat before =
+      propagator_->moveObjects(last_fitted_->masks.dynamic, last_fitted_->frame_id);
+  if (before.empty()) return;
+  const cv::Mat lost = borderPartsOutside(before, fitted);
+  if (cv::countNonZero(lost) == 0) return;
+  if (lingering_) {
+    lingering_->dynamic |= lost;
+    lingering_->area += cv::countNonZero(lost);
+    return;
+  }
+  lingering_ = Lingering{last_fitted_->source_id, frame_id, lost,
+                         objectDepths(lost, depth, options_.refinement), cv::countNonZero(lost)};
 }
 
 cv::Mat MaskStream::fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,

@@ -33,9 +33,9 @@ struct MaskStreamOptions {
   // While tracking is busy computing (setTrackingBusyShare() at or above `busy_share_limit`:
   // offline playback as fast as frames load), the segmenter thread takes a frame only every
   // `busy_interval` frames, since every run takes CPU that tracking needs (ESPNetv2: 60 ms on 2
-  // idle cores, 100-300 ms beside tracking). Tracking that waits for its frames (a camera) leaves CPU to spare:
-  // the segmenter then runs whenever it is free. (Walker, fast playback: every 30 / 45 / 60
-  // frames gives 75 / 78 / 81 % of the frame rate without masks; at 60 frames the masks are
+  // idle cores, 100-300 ms beside tracking). Tracking that waits for its frames (a camera) leaves
+  // CPU to spare: the segmenter then runs whenever it is free. (Walker, fast playback: every 30 /
+  // 45 / 60 frames gives 75 / 78 / 81 % of the frame rate without masks; at 60 frames the masks are
   // too stale: ATE 0.107 against 0.023 m.)
   double busy_share_limit = 0.75;
   int busy_interval = 45;
@@ -53,6 +53,11 @@ struct MaskStreamOptions {
   // Whether a fresh output (age 0) is snapped to depth too; off for outputs already grown over
   // depth (geometric segmentation).
   bool refine_fresh_masks = true;
+  // An object that a new output no longer shows, though the frame before had it in its mask, is
+  // kept in the masks while it touches the image border, for at most this many frames after an
+  // output last showed it: a network does not recognise a person cut down to a strip by the
+  // frame's edge (the walker's shirt at the left border, 24 frames). 0 = off.
+  int border_linger_frames = 0;
   DepthRefinementOptions refinement;
 };
 
@@ -133,8 +138,21 @@ class MaskStream {
     SemanticMasks masks;
   };
 
+  // A lost object at the border, carried on its own (see border_linger_frames).
+  struct Lingering {
+    std::uint64_t seen_id;   // the frame of the last output that showed it
+    std::uint64_t frame_id;  // the frame `dynamic` belongs to
+    cv::Mat dynamic;
+    std::vector<float> object_depths;
+    int area;  // pixels when it was lost: at 1.5 times that it has joined a larger surface
+  };
+
   void work();
   [[nodiscard]] SemanticMasks carryLatest(std::uint64_t frame_id, cv::Size size);
+  // The lingering objects at this frame, given the frame's mask from the outputs (`fitted`).
+  [[nodiscard]] cv::Mat lingeringObjects(const cv::Mat& fitted, const cv::Mat& depth,
+                                         std::uint64_t frame_id);
+  void addLostObjects(const cv::Mat& fitted, const cv::Mat& depth, std::uint64_t frame_id);
   void submit(SegmentationJob job);
   [[nodiscard]] bool segmenterWanted(std::uint64_t frame_id) const;
   void segmentSynchronously(const SegmentationJob& job);
@@ -149,6 +167,9 @@ class MaskStream {
   StreamFrame previous_;          // the caller's last frame
   std::optional<Result> latest_;  // newest output, on the caller's side
   std::optional<Carried> carried_;
+  std::optional<Lingering> lingering_;
+  // The previous frame's mask from the outputs, and the output it came from.
+  std::optional<Carried> last_fitted_;
   std::optional<LateOutput> late_;
   std::deque<Result> delayed_;  // synchronous outputs waiting for their latency
   std::optional<std::uint64_t> last_synchronous_run_;

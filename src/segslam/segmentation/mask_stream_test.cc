@@ -7,6 +7,7 @@
 #include <mutex>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -153,6 +154,66 @@ TEST(MaskStream, AnUndecidedOutputKeepsTheObjectsOfTheOneBefore) {
   }
   EXPECT_EQ(cv::countNonZero(stream.masksFor(4, bgr, cv::Mat()).dynamic), 0);
   EXPECT_EQ(stream.runs(), 5);
+}
+
+// Frames 0-2: an object in `box`; frame 3 and later: the segmenter sees nothing.
+Segment objectUntilFrameTwo(cv::Rect box) {
+  return [box](const SegmentationJob& job) {
+    cv::Mat dynamic = cv::Mat::zeros(job.current.bgr.size(), CV_8UC1);
+    if (job.current.id <= 2) dynamic(box) = 255;
+    return SemanticMasks{dynamic, dynamic};
+  };
+}
+
+// Non-zero pixels of each frame's mask, frames 0-9, of a still camera before a wall 3 m away
+// with whatever `near` covers at 1 m (from frame 3 on: `near_later`).
+std::vector<int> maskAreas(Segment segment, cv::Rect near, int linger_frames,
+                           std::optional<cv::Rect> near_later = std::nullopt) {
+  MaskStreamOptions options;
+  options.synchronous = true;
+  options.interval = 1;
+  options.border_linger_frames = linger_frames;
+  MaskStream stream(std::move(segment), options);
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  cv::Mat depth(48, 64, CV_32FC1, cv::Scalar(3.0f));
+  depth(near) = 1.0f;
+  std::vector<int> areas;
+  for (std::uint64_t frame = 0; frame < 10; ++frame) {
+    if (frame == 3 && near_later) {
+      depth.setTo(3.0f);
+      depth(*near_later) = 1.0f;
+    }
+    areas.push_back(cv::countNonZero(stream.masksFor(frame, bgr, depth).dynamic));
+  }
+  return areas;
+}
+
+// A person cut down to a strip by the image border is no longer recognised: the strip stays in
+// the masks for border_linger_frames frames after the last output that showed it (frame 2).
+TEST(MaskStream, AnObjectLostAtTheBorderLingersForAWhile) {
+  const cv::Rect strip(0, 10, 12, 30);
+  const auto areas = maskAreas(objectUntilFrameTwo(strip), strip, 5);
+  for (std::size_t frame = 0; frame <= 7; ++frame) EXPECT_GE(areas[frame], 12 * 30) << frame;
+  EXPECT_EQ(areas[8], 0);
+  EXPECT_EQ(areas[9], 0);
+  EXPECT_EQ(maskAreas(objectUntilFrameTwo(strip), strip, 0)[3], 0) << "off";
+}
+
+TEST(MaskStream, AnObjectLostInsideTheImageDoesNotLinger) {
+  const cv::Rect box(20, 10, 12, 30);
+  const auto areas = maskAreas(objectUntilFrameTwo(box), box, 5);
+  EXPECT_GE(areas[2], 12 * 30);
+  EXPECT_EQ(areas[3], 0);
+}
+
+// From frame 3 on the strip's depth belongs to a surface three times its width (the person has
+// gone, and the desk he stood in front of is at his depth): the strip snapped to depth would
+// spread over the desk, and is dropped.
+TEST(MaskStream, ALostObjectThatSpreadsOverALargerSurfaceIsDropped) {
+  const cv::Rect strip(0, 10, 12, 30);
+  const auto areas = maskAreas(objectUntilFrameTwo(strip), strip, 5, cv::Rect(0, 0, 36, 48));
+  EXPECT_GE(areas[3], 12 * 30);
+  EXPECT_EQ(areas[4], 0);
 }
 
 TEST(MaskStream, BusyTrackingGetsTheSegmenterOnlyEveryBusyIntervalFrames) {

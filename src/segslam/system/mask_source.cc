@@ -134,11 +134,11 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
   const auto flow = std::make_shared<segmentation::MaskPropagator>();
   if (usesNetwork(source_)) {
     const auto config = segmentation::readModelConfig(options.model_config);
-    semantic_ = std::make_unique<segmentation::MaskStream>(
-        semanticSegment(options, config),
-        streamOptions(synchronous, options.network_interval, options.network_latency, true,
-                      options.carry_labels),
-        flow);
+    auto semantic_options = streamOptions(synchronous, options.network_interval,
+                                          options.network_latency, true, options.carry_labels);
+    semantic_options.border_linger_frames = options.border_linger_frames;
+    semantic_ = std::make_unique<segmentation::MaskStream>(semanticSegment(options, config),
+                                                           semantic_options, flow);
     semantic_classes_.emplace(config.classes);
   }
   if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {

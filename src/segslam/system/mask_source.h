@@ -40,6 +40,8 @@ struct MaskSourceOptions {
   // Whether the network's per-pixel labels are carried to every frame (the object map reads
   // them); without, FrameMasks::labels stays empty and carrying masks costs less.
   bool carry_labels = true;
+  // See segmentation::MaskStreamOptions::border_linger_frames (the network's masks only).
+  int border_linger_frames = 30;
 };
 
 // The masks used when none are asked for: fused when the segmentation network is found, else
