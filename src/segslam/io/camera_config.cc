@@ -191,10 +191,11 @@ void writeCameraYaml(const std::filesystem::path& file, const core::Camera& came
 void validateCamera(const core::Camera& camera, const std::filesystem::path& source) {
   auto fail = [&](const std::string& what) { util::failAt(source, "camera." + what); };
   if (camera.width <= 0 || camera.height <= 0) fail("width and height must be positive");
-  if (!(camera.fx > 0.0) || !(camera.fy > 0.0)) fail("fx and fy must be positive");
+  auto positive = [](double value) { return value > 0.0 && std::isfinite(value); };
+  if (!positive(camera.fx) || !positive(camera.fy)) fail("fx and fy must be positive and finite");
   if (!std::isfinite(camera.cx) || !std::isfinite(camera.cy)) fail("cx and cy must be finite");
-  if (!(camera.depth_factor > 0.0)) fail("depth_factor must be positive");
-  if (!(camera.fps > 0.0)) fail("fps must be positive");
+  if (!positive(camera.depth_factor)) fail("depth_factor must be positive and finite");
+  if (!positive(camera.fps)) fail("fps must be positive and finite");
   for (double d : camera.distortion) {
     if (!std::isfinite(d)) fail("distortion must be finite");
   }

@@ -120,9 +120,16 @@ TEST(CameraConfig, WrongTypesNameFileAndLine) {
 
 TEST(CameraConfig, ImpossibleValuesAreRejected) {
   EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  fx: -500\n"),
-            "d/camera.yaml: camera.fx and fy must be positive");
+            "d/camera.yaml: camera.fx and fy must be positive and finite");
+  EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  fy: .inf\n"),
+            "d/camera.yaml: camera.fx and fy must be positive and finite");
   EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  depth_factor: 0\n"),
-            "d/camera.yaml: camera.depth_factor must be positive");
+            "d/camera.yaml: camera.depth_factor must be positive and finite");
+  // Found by fuzz/fuzz_camera_yaml: an infinite depth factor made every depth 0 m.
+  EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  depth_factor: .inf\n"),
+            "d/camera.yaml: camera.depth_factor must be positive and finite");
+  EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  fps: .inf\n"),
+            "d/camera.yaml: camera.fps must be positive and finite");
   EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  height: -1\n"),
             "d/camera.yaml: camera.width and height must be positive");
   EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  cy: .nan\n"),

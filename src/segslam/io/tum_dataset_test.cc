@@ -185,7 +185,7 @@ TEST_F(TumDatasetTest, NoCameraIsAnErrorThatSaysWhatToPass) {
 TEST_F(TumDatasetTest, BadCameraYamlInFolderNamesIt) {
   writeText(folder_ / "camera.yaml", "camera:\n  preset: freiburg1\n  fx: -1\n");
   EXPECT_EQ(openError(folder_),
-            (folder_ / "camera.yaml").string() + ": camera.fx and fy must be positive");
+            (folder_ / "camera.yaml").string() + ": camera.fx and fy must be positive and finite");
 }
 
 TEST_F(TumDatasetTest, MissingOrWrongFolder) {
