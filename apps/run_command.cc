@@ -11,6 +11,7 @@
 #include "segslam/io/tum_dataset.h"
 #include "segslam/place/cnn_backbone_config.h"
 #include "segslam/place/vocabulary.h"
+#include "segslam/system/loop_detector_choice.h"
 #include "segslam/system/sequence_runner.h"
 #include "segslam/util/logging.h"
 #include "segslam/util/progress.h"
@@ -30,12 +31,21 @@ std::filesystem::path defaultVocabularyFile() {
 struct RunOptions : DatasetArguments {
   MaskArguments masks;
   system::SequenceRunOptions run;
-  std::string loop_detector = "bow";
+  std::string loop_detector = "auto";
   std::filesystem::path vocabulary = defaultVocabularyFile();
   std::filesystem::path backbone_config =
       std::filesystem::path(SEGSLAM_CONFIG_DIR) / "models" / "tiny_darknet_imagenet.yaml";
   std::optional<std::filesystem::path> backbone_model;
 };
+
+// `auto` becomes cnn when the backbone is found, else bow (system::automaticLoopDetector).
+void chooseLoopDetector(RunOptions& options) {
+  if (!options.run.slam.loop_closing || options.loop_detector != "auto") return;
+  const auto automatic =
+      system::automaticLoopDetector(options.backbone_config, options.backbone_model);
+  spdlog::info("loop candidates: {} ({})", automatic.detector, automatic.reason);
+  options.loop_detector = automatic.detector;
+}
 
 void loadLoopBackbone(RunOptions& options) {
   if (!options.run.slam.loop_closing || options.loop_detector != "cnn") return;
@@ -134,6 +144,7 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
 void runCommand(RunOptions& options) {
   const auto dataset = openDataset(options);
   options.run.masks = maskSourceOptions(options.masks);
+  chooseLoopDetector(options);
   loadLoopVocabulary(options);
   loadLoopBackbone(options);
 
@@ -185,10 +196,10 @@ void registerRunCommand(CLI::App& app) {
                   "Keyframes made after a loop correction before the next loop is sought")
       ->capture_default_str();
   run->add_option("--loop-detector", options->loop_detector,
-                  "Loop candidates: bow (bag of words of the static area, needs the vocabulary), "
-                  "vote (descriptor vote, no vocabulary) or cnn (CNN descriptor with the union "
-                  "mask, needs the backbone)")
-      ->check(CLI::IsMember({"bow", "vote", "cnn"}))
+                  "Loop candidates: auto (cnn when the backbone is found, else bow), bow (bag "
+                  "of words of the static area, needs the vocabulary), vote (descriptor vote, no "
+                  "vocabulary) or cnn (CNN descriptor with the union mask, needs the backbone)")
+      ->check(CLI::IsMember({"auto", "bow", "vote", "cnn"}))
       ->capture_default_str();
   run->add_option("--backbone-config", options->backbone_config,
                   "CNN backbone description (YAML) of the cnn loop detector")

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Loop closure: ATE with loop closing off and on (bag-of-words candidates with the union mask, the
-# default, the descriptor vote, and the CNN descriptor with the union mask), loops accepted and
+# descriptor vote, and the CNN descriptor with the union mask: `run`'s default when the backbone
+# is found, bag of words otherwise), loops accepted and
 # whether each agrees with the ground truth, on drifting synthetic room laps and on the sequences
 # the issue names. Writes bench/results/loop_closure.md and bench/results/loop_closure.json.
 #
@@ -111,9 +112,10 @@ def change(on, off):
 
 lines = ["# Loop closure", "",
          "`bench/loop_closure.sh`: `segslam run --deterministic --no-map`, loop closing off, on with",
-         "bag-of-words candidates and the union mask (`bow`, the default), with the descriptor vote",
-         "(`vote`) and with the CNN descriptor and the union mask (`cnn`: tiny_darknet pool2, masked",
-         "average pooling). A loop is false when its verified relative pose is more than 0.1 m or",
+         "bag-of-words candidates and the union mask (`bow`, the default without the backbone), with",
+         "the descriptor vote (`vote`) and with the CNN descriptor and the union mask (`cnn`,",
+         "tiny_darknet pool2, masked average pooling: the default when the backbone is found).",
+         "A loop is false when its verified relative pose is more than 0.1 m or",
          "5 degrees from the ground truth's. Loops: accepted / false, with the worst translation",
          f"error and the query keyframes. Load while measuring: `{load}`.", "",
          "| sequence | keyframes | ATE off (m) | " +
