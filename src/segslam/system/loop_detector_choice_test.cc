@@ -16,12 +16,8 @@ const std::filesystem::path kShippedBackboneConfig =
 // A backbone config like the shipped one that names `model` as its network, written into `dir`.
 std::filesystem::path backboneConfigNaming(const std::filesystem::path& dir,
                                            const std::filesystem::path& model) {
-  std::ifstream shipped(kShippedBackboneConfig);
   const auto file = dir / "backbone.yaml";
-  std::ofstream config(file);
-  for (std::string line; std::getline(shipped, line);) {
-    config << (line.starts_with("  model: ") ? "  model: " + model.string() : line) << "\n";
-  }
+  testing::writeConfigNamingModel(kShippedBackboneConfig, file, model);
   return file;
 }
 

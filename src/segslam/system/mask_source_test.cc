@@ -74,13 +74,9 @@ const std::filesystem::path kShippedModelConfig =
 // Mask options whose model config is like the shipped one but names `model` as its network.
 MaskSourceOptions withNetworkAt(const std::filesystem::path& dir,
                                 const std::filesystem::path& model) {
-  std::ifstream shipped(kShippedModelConfig);
   MaskSourceOptions options;
   options.model_config = dir / "net.yaml";
-  std::ofstream config(options.model_config);
-  for (std::string line; std::getline(shipped, line);) {
-    config << (line.starts_with("  model: ") ? "  model: " + model.string() : line) << "\n";
-  }
+  testing::writeConfigNamingModel(kShippedModelConfig, options.model_config, model);
   return options;
 }
 

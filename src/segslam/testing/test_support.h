@@ -43,6 +43,18 @@ inline std::string fileContents(const std::filesystem::path& file) {
   return bytes.str();
 }
 
+// Writes `file`: a copy of the model config `shipped` whose "  model: " line names `model`
+// instead (a config like the shipped one, with its network somewhere else or missing).
+inline void writeConfigNamingModel(const std::filesystem::path& shipped,
+                                   const std::filesystem::path& file,
+                                   const std::filesystem::path& model) {
+  std::ifstream in(shipped);
+  std::ofstream out(file);
+  for (std::string line; std::getline(in, line);) {
+    out << (line.starts_with("  model: ") ? "  model: " + model.string() : line) << "\n";
+  }
+}
+
 // A fresh, empty directory removed when the object goes out of scope.
 class ScopedTempDir {
  public:
