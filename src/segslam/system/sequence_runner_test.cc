@@ -55,6 +55,23 @@ TEST(SequenceRunner, StaticSyntheticSequenceIsTrackedToMillimetres) {
   }
 }
 
+// The synthetic room's far wall stands about 4 m from the camera, beyond the close depth
+// (3.05 m): keyframes that made points only up to it left most of the view without any.
+TEST(SequenceRunner, KeyframesMapTheFarWallBeyondTheCloseDepth) {
+  const ScopedTempDir dir;
+  synth::generateSequence(syntheticSequence(0), dir.path() / "sequence");
+  const auto dataset = io::TumDataset::open(dir.path() / "sequence");
+  SequenceRunOptions options;
+  options.slam.deterministic = true;
+  options.slam.loop_closing = false;
+  const auto noop = [](const FrameStats&) {};
+  const auto far = runSequence(dataset, options, dir.path() / "far", noop);
+  options.slam.tracker.new_point_depth_factor = 1.0;
+  const auto close_only = runSequence(dataset, options, dir.path() / "close", noop);
+  EXPECT_GT(far.map_points, close_only.map_points * 3 / 2);
+  EXPECT_LT(ateRmse(far), 0.005);
+}
+
 TEST(SequenceRunner, OracleMasksKeepWalkingPeopleOutOfThePose) {
   const ScopedTempDir dir;
   synth::generateSequence(syntheticSequence(2), dir.path() / "sequence");

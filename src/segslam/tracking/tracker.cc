@@ -353,7 +353,7 @@ void Tracker::createKeyFrame() {
 }
 
 void Tracker::addNewMapPoints(map::KeyFrame& keyframe) {
-  const double close_depth = current_.camera->close_depth_m;
+  const double max_depth = current_.camera->close_depth_m * options_.new_point_depth_factor;
   int created_or_tracked = 0;
   for (std::size_t i : keypointsByDepth(current_)) {
     if (hasMapPoint(current_, i)) {
@@ -367,7 +367,7 @@ void Tracker::addNewMapPoints(map::KeyFrame& keyframe) {
       current_.map_points[i] = point;
       ++created_or_tracked;
     }
-    if (current_.depth[i] > close_depth &&
+    if (current_.depth[i] > max_depth &&
         created_or_tracked > options_.min_new_points_per_keyframe) {
       break;
     }
