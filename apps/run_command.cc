@@ -57,18 +57,23 @@ void loadLoopBackbone(RunOptions& options) {
   options.run.slam.loop_backbone = std::move(backbone);
 }
 
-// Only the shipped vocabulary may be missing (a checkout without config/): loop closing then
-// falls back to the descriptor vote. A vocabulary the user names must load.
-void loadLoopVocabulary(RunOptions& options) {
-  if (!options.run.slam.loop_closing || options.loop_detector != "bow") return;
+// The vocabulary serves relocalisation, and loop candidates with the bow detector. Only the
+// shipped one may be missing (a checkout without config/): relocalisation then tries the most
+// recent keyframes only, and the bow detector falls back to the descriptor vote. A vocabulary the
+// user names must load.
+void loadVocabulary(RunOptions& options) {
+  const bool bow_loops = options.run.slam.loop_closing && options.loop_detector == "bow";
   if (options.vocabulary == defaultVocabularyFile() &&
       !std::filesystem::exists(options.vocabulary)) {
-    spdlog::warn("no vocabulary at {}: loop candidates by descriptor vote",
-                 options.vocabulary.string());
+    spdlog::warn("no vocabulary at {}: relocalisation against the most recent keyframes only{}",
+                 options.vocabulary.string(),
+                 bow_loops ? ", loop candidates by descriptor vote" : "");
     return;
   }
-  options.run.slam.loop_vocabulary =
+  const auto vocabulary =
       std::make_shared<const place::Vocabulary>(place::Vocabulary::load(options.vocabulary));
+  options.run.slam.relocalisation_vocabulary = vocabulary;
+  if (bow_loops) options.run.slam.loop_vocabulary = vocabulary;
 }
 
 void printSummary(const RunOptions& options, const system::SequenceRunSummary& s) {
@@ -145,7 +150,7 @@ void runCommand(RunOptions& options) {
   const auto dataset = openDataset(options);
   options.run.masks = maskSourceOptions(options.masks);
   chooseLoopDetector(options);
-  loadLoopVocabulary(options);
+  loadVocabulary(options);
   loadLoopBackbone(options);
 
   std::filesystem::create_directories(options.out_dir);
@@ -211,8 +216,10 @@ void registerRunCommand(CLI::App& app) {
   run->add_option("--cnn-layer", options->run.slam.loop_cnn.layer,
                   "Layer of the backbone config compared by the cnn loop detector")
       ->capture_default_str();
-  run->add_option("--vocabulary", options->vocabulary,
-                  "Bag-of-words vocabulary of the bow loop detector (segslam vocab train)")
+  run->add_option(
+         "--vocabulary", options->vocabulary,
+         "Bag-of-words vocabulary for relocalisation and the bow loop detector (segslam vocab "
+         "train)")
       ->capture_default_str();
   run->add_flag("--deterministic", options->run.slam.deterministic,
                 "Run local mapping inline after each keyframe: reproducible results, slower");

@@ -49,7 +49,7 @@ SlamSystem::SlamSystem(const core::Camera& camera, SlamOptions options)
           feature::ScaleLevels(options.orb.num_levels, options.orb.scale_factor))),
       extractor_(extractorOptions(options.orb)),
       mapper_(map_, options.mapper),
-      tracker_(map_, mapper_, options.tracker) {
+      tracker_(map_, mapper_, options.tracker, options.relocalisation_vocabulary) {
   if (options_.loop_closing) {
     loop_closer_ = std::make_unique<loop::LoopCloser>(
         map_, mapper_, loopCandidateDetector(options_), options_.loop);

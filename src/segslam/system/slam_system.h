@@ -35,6 +35,9 @@ struct SlamOptions {
   std::shared_ptr<const place::Vocabulary> loop_vocabulary;
   loop::BowLoopOptions loop_bow;
   loop::DescriptorVoteOptions loop_detector;
+  // Relocalisation candidates by bag of words (tracking::KeyFrameDatabase); without a
+  // vocabulary a lost frame is matched against the most recent keyframes only.
+  std::shared_ptr<const place::Vocabulary> relocalisation_vocabulary;
   // Virtual stereo baseline in metres and the depth, in baselines, below which a keypoint's
   // depth is trusted to create points (40 baselines ~ 3.1 m).
   double virtual_baseline_m = map::kDefaultVirtualBaselineM;

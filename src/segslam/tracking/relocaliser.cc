@@ -49,11 +49,8 @@ std::optional<PnpResult> solvePnp(const map::Frame& frame,
 }  // namespace
 
 std::optional<geometry::Pose> relocaliseAgainstKeyFrames(
-    map::Frame& frame, const std::vector<std::shared_ptr<map::KeyFrame>>& keyframes,
-    std::size_t max_candidates) {
-  const std::size_t count = std::min(max_candidates, keyframes.size());
-  for (std::size_t c = 0; c < count; ++c) {
-    const auto& keyframe = keyframes[keyframes.size() - 1 - c];
+    map::Frame& frame, const std::vector<std::shared_ptr<map::KeyFrame>>& candidates) {
+  for (const auto& keyframe : candidates) {
     std::fill(frame.map_points.begin(), frame.map_points.end(), nullptr);
     if (searchByDescriptors(frame, *keyframe, 0.75) < kMinMatches) continue;
     std::vector<std::size_t> matched;

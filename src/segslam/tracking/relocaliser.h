@@ -9,12 +9,11 @@
 
 namespace segslam::tracking {
 
-// Finds the pose of a frame that lost track: descriptor matching against candidate keyframes
-// (the most recent ones first), then PnP with RANSAC on the matched map points. On success the
-// frame's map_points hold the RANSAC inliers and the pose is returned (not yet refined).
-// Bag-of-words candidate retrieval replaces the recency order once place recognition exists.
+// Finds the pose of a frame that lost track: descriptor matching against the candidate keyframes
+// in the order given, then PnP with RANSAC on the matched map points, until one succeeds. On
+// success the frame's map_points hold the RANSAC inliers and the pose is returned (not yet
+// refined).
 std::optional<geometry::Pose> relocaliseAgainstKeyFrames(
-    map::Frame& frame, const std::vector<std::shared_ptr<map::KeyFrame>>& keyframes,
-    std::size_t max_candidates = 15);
+    map::Frame& frame, const std::vector<std::shared_ptr<map::KeyFrame>>& candidates);
 
 }  // namespace segslam::tracking

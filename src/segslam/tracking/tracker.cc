@@ -37,8 +37,11 @@ bool hasMapPoint(const map::Frame& frame, std::size_t i) {
 
 }  // namespace
 
-Tracker::Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options)
-    : map_(map), sink_(sink), options_(options) {}
+Tracker::Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options,
+                 std::shared_ptr<const place::Vocabulary> vocabulary)
+    : map_(map), sink_(sink), options_(options) {
+  if (vocabulary) keyframe_database_.emplace(std::move(vocabulary));
+}
 
 TrackingResult Tracker::track(map::Frame frame) {
   last_ = std::move(current_);
@@ -56,17 +59,21 @@ TrackingResult Tracker::track(map::Frame frame) {
     return result;
   }
 
-  bool ok = false;
-  if (state_ == TrackingState::kOk) {
-    ok = (velocity_ && trackWithMotionModel()) || trackReferenceKeyFrame();
-  } else {
-    ok = relocalise();
-  }
-  if (ok) ok = trackLocalMap();
+  const bool tracked = state_ == TrackingState::kOk &&
+                       ((velocity_ && trackWithMotionModel()) || trackReferenceKeyFrame());
+  // A frame that loses track tries relocalisation at once: the camera may have been carried
+  // elsewhere, and the frame is as good a query as the next.
+  const bool relocalised = !tracked && relocalise();
+  const bool ok = (tracked || relocalised) && trackLocalMap();
 
   if (ok) {
     state_ = TrackingState::kOk;
-    velocity_ = geometry::orthonormalised(current_.T_cw * last_.T_cw.inverse());
+    // After relocalisation the last frame's pose says nothing about the camera's motion.
+    if (relocalised) {
+      velocity_.reset();
+    } else {
+      velocity_ = geometry::orthonormalised(current_.T_cw * last_.T_cw.inverse());
+    }
     cullPointsSeenThrough();
     rememberPose();
     reference_overlap_.update(reference_keyframe_->id, trackedOfReference());
@@ -110,6 +117,7 @@ bool Tracker::initialise() {
   current_.reference_keyframe = keyframe;
   local_keyframes_ = {keyframe};
   local_points_ = map_.mapPoints();
+  if (keyframe_database_) keyframe_database_->add(keyframe);
   sink_.insertKeyFrame(keyframe);
   return true;
 }
@@ -155,13 +163,31 @@ bool Tracker::trackReferenceKeyFrame() {
 
 bool Tracker::relocalise() {
   std::fill(current_.map_points.begin(), current_.map_points.end(), nullptr);
-  const auto pose = relocaliseAgainstKeyFrames(current_, map_.keyFrames());
+  const auto pose = relocaliseAgainstKeyFrames(current_, relocalisationCandidates());
   if (!pose) return false;
   current_.T_cw = *pose;
   if (optimiseCurrentPose() < options_.min_inliers_after_relocalisation) return false;
   last_relocalisation_frame_id_ = current_.id;
-  spdlog::info("frame {}: relocalised", current_.id);
+  spdlog::info("frame {}: relocalised against keyframe {}", current_.id,
+               current_.reference_keyframe->id);
   return true;
+}
+
+std::vector<std::shared_ptr<map::KeyFrame>> Tracker::relocalisationCandidates() const {
+  std::vector<std::shared_ptr<map::KeyFrame>> candidates;
+  if (keyframe_database_) {
+    candidates =
+        keyframe_database_->candidates(current_, options_.relocalisation_similar_keyframes);
+  }
+  const auto keyframes = map_.keyFrames();
+  std::size_t recent = 0;
+  for (auto it = keyframes.rbegin();
+       it != keyframes.rend() && recent < options_.relocalisation_recent_keyframes; ++it) {
+    if (std::find(candidates.begin(), candidates.end(), *it) != candidates.end()) continue;
+    candidates.push_back(*it);
+    ++recent;
+  }
+  return candidates;
 }
 
 int Tracker::optimiseCurrentPose() {
@@ -349,6 +375,7 @@ void Tracker::createKeyFrame() {
   current_.reference_keyframe = keyframe;
   last_keyframe_ = keyframe;
   last_keyframe_frame_id_ = current_.id;
+  if (keyframe_database_) keyframe_database_->add(keyframe);
   sink_.insertKeyFrame(keyframe);
 }
 

@@ -9,6 +9,7 @@
 #include "segslam/map/frame.h"
 #include "segslam/map/map.h"
 #include "segslam/tracking/free_space_check.h"
+#include "segslam/tracking/keyframe_database.h"
 #include "segslam/tracking/keyframe_decision.h"
 #include "segslam/tracking/keyframe_sink.h"
 #include "segslam/tracking/late_mask_check.h"
@@ -31,6 +32,11 @@ struct TrackerOptions {
   int max_local_keyframes = 80;
   int min_inliers = 30;
   int min_inliers_after_relocalisation = 50;
+  // A lost frame is matched against the keyframes that look most like it (by bag of words, given
+  // a vocabulary: the camera may have been carried anywhere in the map), then against the most
+  // recent ones (it may have lost track where it was, behind a person).
+  std::size_t relocalisation_similar_keyframes = 10;
+  std::size_t relocalisation_recent_keyframes = 15;
   // Map points that this many tracked frames' depth sees through are culled: they were on
   // something that has moved away (a person missed by a late mask). 0 = never.
   int seen_through_frames_to_cull = 2;
@@ -54,7 +60,9 @@ struct TrackingResult {
 // creates map points from its depth. The caller holds map.mutex around track().
 class Tracker {
  public:
-  Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options = {});
+  // Without a vocabulary, relocalisation tries the most recent keyframes only.
+  Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options = {},
+          std::shared_ptr<const place::Vocabulary> vocabulary = nullptr);
 
   TrackingResult track(map::Frame frame);
 
@@ -81,6 +89,7 @@ class Tracker {
   bool trackWithMotionModel();
   bool trackReferenceKeyFrame();
   bool relocalise();
+  [[nodiscard]] std::vector<std::shared_ptr<map::KeyFrame>> relocalisationCandidates() const;
   bool trackLocalMap();
   void addVisualOdometryPoints();
   int optimiseCurrentPose();
@@ -100,6 +109,7 @@ class Tracker {
   map::Map& map_;
   KeyFrameSink& sink_;
   TrackerOptions options_;
+  std::optional<KeyFrameDatabase> keyframe_database_;
   TrackingState state_ = TrackingState::kNotInitialised;
   map::Frame current_;
   map::Frame last_;
