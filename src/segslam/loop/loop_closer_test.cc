@@ -5,6 +5,7 @@
 #include "segslam/io/tum_dataset.h"
 #include "segslam/synth/generator.h"
 #include "segslam/system/sequence_runner.h"
+#include "segslam/testing/synth_sequences.h"
 #include "segslam/testing/test_support.h"
 
 // End to end: a synthetic lap around a room, turning once all the way round and ending where it
@@ -22,15 +23,7 @@ constexpr double kAteWithoutLoopClosing = 0.0142;
 
 TEST(LoopCloser, ClosingTheLapReducesTheDrift) {
   const ScopedTempDir dir;
-  synth::SynthOptions lap;
-  lap.path = "room";
-  lap.people = 0;
-  lap.frames = 450;
-  lap.width = 320;
-  lap.height = 240;
-  lap.depth_noise = "kinect";
-  lap.seed = 1;
-  synth::generateSequence(lap, dir.path() / "lap");
+  synth::generateSequence(testing::noisyRoomLap(450), dir.path() / "lap");
   system::SequenceRunOptions options;
   options.slam.deterministic = true;
   options.slam.loop_vocabulary = std::make_shared<const place::Vocabulary>(place::Vocabulary::load(

@@ -7,6 +7,7 @@
 
 #include "segslam/io/tum_dataset.h"
 #include "segslam/synth/generator.h"
+#include "segslam/testing/synth_sequences.h"
 #include "segslam/testing/test_support.h"
 
 namespace segslam::system {
@@ -53,14 +54,7 @@ KidnapResult playKidnappedLap(const io::TumDataset& lap, SlamOptions options) {
 
 TEST(SlamSystem, RelocalisesACameraCarriedToAPlaceSeenLongBefore) {
   const ScopedTempDir dir;
-  synth::SynthOptions lap;
-  lap.path = "room";
-  lap.people = 0;
-  lap.frames = 300;
-  lap.width = 320;
-  lap.height = 240;
-  lap.depth_noise = "kinect";
-  synth::generateSequence(lap, dir.path() / "lap");
+  synth::generateSequence(testing::noisyRoomLap(300), dir.path() / "lap");
   const auto dataset = io::TumDataset::open(dir.path() / "lap");
 
   SlamOptions with_vocabulary;
