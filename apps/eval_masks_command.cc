@@ -26,6 +26,10 @@ void printSummary(const EvalMasksOptions& options, const system::MaskEvaluationS
              s.mean_precision, s.mean_recall);
   fmt::print("  all pixels       IoU {:.3f}, precision {:.3f}, recall {:.3f}\n", s.total.iou(),
              s.total.precision(), s.total.recall());
+  fmt::print(
+      "  pixels of frames with dynamic pixels: IoU {:.3f}, precision {:.3f}, recall {:.3f}\n",
+      s.total_where_dynamic.iou(), s.total_where_dynamic.precision(),
+      s.total_where_dynamic.recall());
   fmt::print("  keypoints on moving objects: {} without a mask, {} with it ({:.1f} % survive)\n",
              s.survival.on_dynamic_without_mask, s.survival.on_dynamic_with_mask,
              100.0 * s.survival.survivingShare());

@@ -30,23 +30,6 @@ eval::KeypointSurvival keypointSurvival(feature::OrbExtractor& extractor, const 
   return {eval::keypointsOnDynamic(unmasked, truth), eval::keypointsOnDynamic(masked, truth)};
 }
 
-void summarise(MaskEvaluationSummary& summary) {
-  for (const auto& frame : summary.frames) {
-    summary.total += frame.scores;
-    summary.survival += frame.survival;
-    if (!frame.truth_dynamic) continue;
-    ++summary.frames_with_dynamic;
-    summary.mean_iou += frame.scores.iou();
-    summary.mean_precision += frame.scores.precision();
-    summary.mean_recall += frame.scores.recall();
-  }
-  if (summary.frames_with_dynamic == 0) return;
-  const auto n = static_cast<double>(summary.frames_with_dynamic);
-  summary.mean_iou /= n;
-  summary.mean_precision /= n;
-  summary.mean_recall /= n;
-}
-
 void writeCsv(const std::filesystem::path& file, const MaskEvaluationSummary& summary) {
   auto out = fmt::output_file(file.string());
   out.print(
@@ -125,6 +108,27 @@ class IgnoredPixels {
 
 }  // namespace
 
+MaskEvaluationSummary summariseMaskScores(std::vector<FrameMaskScores> frames) {
+  MaskEvaluationSummary summary;
+  summary.frames = std::move(frames);
+  for (const auto& frame : summary.frames) {
+    summary.total += frame.scores;
+    summary.survival += frame.survival;
+    if (!frame.truth_dynamic) continue;
+    summary.total_where_dynamic += frame.scores;
+    ++summary.frames_with_dynamic;
+    summary.mean_iou += frame.scores.iou();
+    summary.mean_precision += frame.scores.precision();
+    summary.mean_recall += frame.scores.recall();
+  }
+  if (summary.frames_with_dynamic == 0) return summary;
+  const auto n = static_cast<double>(summary.frames_with_dynamic);
+  summary.mean_iou /= n;
+  summary.mean_precision /= n;
+  summary.mean_recall /= n;
+  return summary;
+}
+
 MaskEvaluationSummary evaluateMasks(const io::TumDataset& dataset,
                                     const MaskEvaluationOptions& options,
                                     const std::filesystem::path& out_dir,
@@ -143,7 +147,7 @@ MaskEvaluationSummary evaluateMasks(const io::TumDataset& dataset,
   if (options.write_masks) mask_writer.emplace(out_dir);
   std::optional<IgnoredPixels> ignored;
   if (options.ignore_masks) ignored.emplace(*options.ignore_masks);
-  MaskEvaluationSummary summary;
+  std::vector<FrameMaskScores> scored_frames;
   const std::size_t frames = std::min(options.max_frames, dataset.size());
   for (std::size_t i = 0; i < frames; ++i) {
     const io::RgbdFrame frame = dataset.loadFrame(i);
@@ -155,11 +159,11 @@ MaskEvaluationSummary evaluateMasks(const io::TumDataset& dataset,
         ignored ? ignored->apply(predicted, frame.mask, frame.timestamp) : predicted;
     scores.scores = eval::compareMasks(scored, frame.mask);
     scores.survival = keypointSurvival(extractor, frame.rgb, predicted, frame.mask);
-    summary.frames.push_back(scores);
+    scored_frames.push_back(scores);
     if (mask_writer) mask_writer->write(frame.timestamp, predicted, frame.mask.size());
     if (on_frame) on_frame();
   }
-  summarise(summary);
+  const MaskEvaluationSummary summary = summariseMaskScores(std::move(scored_frames));
   writeCsv(out_dir / "mask_evaluation.csv", summary);
   std::ofstream(out_dir / "mask_evaluation.json") << toJson(summary).dump(2) << "\n";
   return summary;
@@ -174,6 +178,9 @@ nlohmann::json toJson(const MaskEvaluationSummary& summary) {
           {"pixel_iou", summary.total.iou()},
           {"pixel_precision", summary.total.precision()},
           {"pixel_recall", summary.total.recall()},
+          {"pixel_iou_where_dynamic", summary.total_where_dynamic.iou()},
+          {"pixel_precision_where_dynamic", summary.total_where_dynamic.precision()},
+          {"pixel_recall_where_dynamic", summary.total_where_dynamic.recall()},
           {"keypoints_on_dynamic_unmasked", summary.survival.on_dynamic_without_mask},
           {"keypoints_on_dynamic_masked", summary.survival.on_dynamic_with_mask},
           {"keypoint_survival", summary.survival.survivingShare()}};

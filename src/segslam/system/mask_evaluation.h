@@ -41,8 +41,15 @@ struct MaskEvaluationSummary {
   double mean_precision = 0.0;
   double mean_recall = 0.0;
   eval::MaskScores total;  // all pixels of all frames
+  // All pixels of the frames whose ground truth marks something: the pooled (dataset-level)
+  // IoU of segmentation benchmarks over the frames where an object is visible.
+  eval::MaskScores total_where_dynamic;
   eval::KeypointSurvival survival;
 };
+
+// The summary of scored frames: means over the frames whose ground truth marks something, and
+// the pixels pooled over all frames and over those frames.
+MaskEvaluationSummary summariseMaskScores(std::vector<FrameMaskScores> frames);
 
 // Runs a mask source over a dataset with ground-truth masks (mask.txt) and scores every frame:
 // IoU, precision and recall of the predicted dynamic mask, and the share of keypoints on truly

@@ -40,6 +40,35 @@ TEST(EvaluateMasks, OracleMasksScorePerfectlyAndCanBeWrittenAsAMaskList) {
   }
 }
 
+FrameMaskScores frameScores(bool truth_dynamic, std::int64_t tp, std::int64_t fp, std::int64_t fn) {
+  FrameMaskScores frame;
+  frame.truth_dynamic = truth_dynamic;
+  frame.scores = {.true_positive = tp, .false_positive = fp, .false_negative = fn};
+  return frame;
+}
+
+// A frame showing a large object found well, one showing a sliver missed, one showing nothing
+// with a false alarm: per-frame means weigh the sliver like the large object, pooled pixels do
+// not, and only the pooled scores over all frames count the false alarm.
+TEST(SummariseMaskScores, MeansPerFramePooledPixelsAndPooledPixelsWhereSomethingMoves) {
+  const auto summary = summariseMaskScores(
+      {frameScores(true, 90, 10, 0), frameScores(true, 0, 0, 10), frameScores(false, 0, 100, 0)});
+  EXPECT_EQ(summary.frames.size(), 3U);
+  EXPECT_EQ(summary.frames_with_dynamic, 2U);
+  EXPECT_DOUBLE_EQ(summary.mean_iou, (0.9 + 0.0) / 2.0);
+  EXPECT_DOUBLE_EQ(summary.total_where_dynamic.iou(), 90.0 / 110.0);
+  EXPECT_DOUBLE_EQ(summary.total.iou(), 90.0 / 210.0);
+  EXPECT_DOUBLE_EQ(summary.mean_recall, 0.5);
+  EXPECT_DOUBLE_EQ(summary.total_where_dynamic.recall(), 0.9);
+}
+
+TEST(SummariseMaskScores, NoFrameWithSomethingMovingLeavesTheMeansAtZero) {
+  const auto summary = summariseMaskScores({frameScores(false, 0, 5, 0)});
+  EXPECT_EQ(summary.frames_with_dynamic, 0U);
+  EXPECT_DOUBLE_EQ(summary.mean_iou, 0.0);
+  EXPECT_DOUBLE_EQ(summary.total.precision(), 0.0);
+}
+
 TEST(EvaluateMasks, IgnoreListWithoutTheFrameFailsNamingTheList) {
   const ScopedTempDir temp;
   io::testing::writeTinyDataset(temp.path() / "data", 2);
