@@ -11,21 +11,13 @@
 # SEGSLAM_SHARED_DIR).
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 out="$root/out/bench_bow"
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build="$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    *) echo "bow_vocabulary.sh: unknown option '$1'" >&2; exit 2 ;;
-  esac
-done
+bench_parse_build_out "$@"
 segslam="$build/segslam"
 evaluate="$build/bench/segslam_bench_bow_place_recognition"
-[[ -x "$segslam" && -x "$evaluate" ]] || { echo "bow_vocabulary.sh: build first (./setup.sh)" >&2; exit 1; }
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
-[[ -d "$shared/data" ]] || { echo "bow_vocabulary.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+[[ -x "$segslam" && -x "$evaluate" ]] || bench_fail "build first (./setup.sh)"
+bench_require_dir "$shared/data"
 mkdir -p "$out" "$root/bench/results"
 
 "$root/scripts/render_vocabulary_sequences.sh" "$segslam" "$out/synth"

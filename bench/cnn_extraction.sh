@@ -8,20 +8,18 @@
 # Needs ../shared beside the project (or SEGSLAM_SHARED_DIR): tum_fr1_xyz_300 and the model.
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 frames=20
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --build) build="$2"; shift 2 ;;
     --frames) frames="$2"; shift 2 ;;
-    *) echo "cnn_extraction.sh: unknown option '$1'" >&2; exit 2 ;;
+    *) bench_unknown_option "$1" ;;
   esac
 done
 bench="$build/bench/segslam_bench_cnn_extraction"
-[[ -x "$bench" ]] || { echo "cnn_extraction.sh: $bench not built (cmake --build build --target segslam_bench_cnn_extraction)" >&2; exit 1; }
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
-[[ -d "$shared/data/tum_fr1_xyz_300" ]] || { echo "cnn_extraction.sh: $shared/data/tum_fr1_xyz_300 not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+[[ -x "$bench" ]] || bench_fail "$bench not built (cmake --build build --target segslam_bench_cnn_extraction)"
+bench_require_dir "$shared/data/tum_fr1_xyz_300"
 config="$root/config/models/tiny_darknet_imagenet.yaml"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT

@@ -10,20 +10,11 @@
 # figures do not depend on how busy the machine is.
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 out="$root/out/bench_late_masks"
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build="$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    *) echo "late_masks.sh: unknown option '$1'" >&2; exit 2 ;;
-  esac
-done
-segslam="$build/segslam"
-[[ -x "$segslam" ]] || { echo "late_masks.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
-[[ -d "$shared/data" ]] || { echo "late_masks.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+bench_parse_build_out "$@"
+bench_require_segslam
+bench_require_dir "$shared/data"
 walker="$shared/data/tum_fr1_xyz_300_walker"
 fr1="$shared/data/tum_fr1_xyz_300"
 mkdir -p "$out" "$root/bench/results"

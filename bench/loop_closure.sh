@@ -15,8 +15,7 @@
 # relative pose is more than 0.1 m or 5 degrees from the ground truth's counts as false.
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 out="$root/out/bench_loop"
 reuse=false
 modes="off bow vote cnn"
@@ -26,12 +25,10 @@ while [[ $# -gt 0 ]]; do
     --out) out="$2"; shift 2 ;;
     --reuse) reuse=true; shift ;;
     --modes) modes="off ${2//off/}"; shift 2 ;;
-    *) echo "loop_closure.sh: unknown option '$1'" >&2; exit 2 ;;
+    *) bench_unknown_option "$1" ;;
   esac
 done
-segslam="$build/segslam"
-[[ -x "$segslam" ]] || { echo "loop_closure.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
+bench_require_segslam
 mkdir -p "$out" "$root/bench/results"
 
 render() {  # name, synth options...

@@ -12,8 +12,7 @@
 # Needs ../shared beside the project (or SEGSLAM_SHARED_DIR) for the real sequences and models.
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 out="$root/out/bench_loops"
 every=5
 while [[ $# -gt 0 ]]; do
@@ -21,13 +20,11 @@ while [[ $# -gt 0 ]]; do
     --build) build="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --every) every="$2"; shift 2 ;;
-    *) echo "loop_detection.sh: unknown option '$1'" >&2; exit 2 ;;
+    *) bench_unknown_option "$1" ;;
   esac
 done
-segslam="$build/segslam"
-[[ -x "$segslam" ]] || { echo "loop_detection.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
-[[ -d "$shared/data" ]] || { echo "loop_detection.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+bench_require_segslam
+bench_require_dir "$shared/data"
 results="$root/bench/results"
 mkdir -p "$out" "$results"
 base=loops

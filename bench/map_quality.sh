@@ -20,8 +20,7 @@
 # Needs ../shared beside the project (or SEGSLAM_SHARED_DIR).
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 out="$root/out/bench_maps"
 runs=3
 part=all
@@ -31,13 +30,11 @@ while [[ $# -gt 0 ]]; do
     --out) out="$2"; shift 2 ;;
     --runs) runs="$2"; shift 2 ;;
     --part) part="$2"; shift 2 ;;
-    *) echo "map_quality.sh: unknown option '$1'" >&2; exit 2 ;;
+    *) bench_unknown_option "$1" ;;
   esac
 done
-segslam="$build/segslam"
-[[ -x "$segslam" ]] || { echo "map_quality.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
-[[ -d "$shared/data" ]] || { echo "map_quality.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+bench_require_segslam
+bench_require_dir "$shared/data"
 mkdir -p "$out" "$root/bench/results"
 walker="$shared/data/tum_fr1_xyz_300_walker"
 cpu_name="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"

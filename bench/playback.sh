@@ -13,11 +13,9 @@
 # spreads over all of them. Medians over the rounds, every run listed in the JSON.
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 out="$root/out/bench_playback"
 rounds=3
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
 dataset="$shared/data/tum_fr1_xyz_300_walker"
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -25,12 +23,11 @@ while [[ $# -gt 0 ]]; do
     --out) out="$2"; shift 2 ;;
     --rounds) rounds="$2"; shift 2 ;;
     --dataset) dataset="$2"; shift 2 ;;
-    *) echo "playback.sh: unknown option '$1'" >&2; exit 2 ;;
+    *) bench_unknown_option "$1" ;;
   esac
 done
-segslam="$build/segslam"
-[[ -x "$segslam" ]] || { echo "playback.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
-[[ -d "$dataset" ]] || { echo "playback.sh: $dataset not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+bench_require_segslam
+bench_require_dir "$dataset"
 mkdir -p "$out" "$root/bench/results"
 
 # playback | masks | extra options

@@ -10,18 +10,10 @@
 #   bench/relocalisation.sh [--build DIR] [--out DIR]
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 out="$root/out/bench_relocalisation"
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build="$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    *) echo "relocalisation.sh: unknown option '$1'" >&2; exit 2 ;;
-  esac
-done
-segslam="$build/segslam"
-[[ -x "$segslam" ]] || { echo "relocalisation.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
+bench_parse_build_out "$@"
+bench_require_segslam
 mkdir -p "$out" "$root/bench/results"
 
 lap="$out/room_320"

@@ -15,8 +15,7 @@
 # (`--ignore-masks`): those pixels are what the network marks on the same frames without the walker.
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 out="$root/out/bench_segmentation"
 part=all
 while [[ $# -gt 0 ]]; do
@@ -24,13 +23,11 @@ while [[ $# -gt 0 ]]; do
     --build) build="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --part) part="$2"; shift 2 ;;
-    *) echo "segmentation.sh: unknown option '$1'" >&2; exit 2 ;;
+    *) bench_unknown_option "$1" ;;
   esac
 done
-segslam="$build/segslam"
-[[ -x "$segslam" ]] || { echo "segmentation.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
-[[ -d "$shared/data" ]] || { echo "segmentation.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+bench_require_segslam
+bench_require_dir "$shared/data"
 walker="$shared/data/tum_fr1_xyz_300_walker"
 fr1="$shared/data/tum_fr1_xyz_300"
 mkdir -p "$out" "$root/bench/results"

@@ -10,8 +10,7 @@
 # synthetic ones are rendered by `segslam synth` into the output folder.
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 out="$root/out/bench_tracking"
 runs=3
 while [[ $# -gt 0 ]]; do
@@ -19,13 +18,11 @@ while [[ $# -gt 0 ]]; do
     --build) build="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --runs) runs="$2"; shift 2 ;;
-    *) echo "tracking_accuracy.sh: unknown option '$1'" >&2; exit 2 ;;
+    *) bench_unknown_option "$1" ;;
   esac
 done
-segslam="$build/segslam"
-[[ -x "$segslam" ]] || { echo "tracking_accuracy.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
-[[ -d "$shared/data" ]] || { echo "tracking_accuracy.sh: $shared/data not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+bench_require_segslam
+bench_require_dir "$shared/data"
 mkdir -p "$out" "$root/bench/results"
 
 render() {  # name, synth options...

@@ -8,8 +8,7 @@
 # SEGSLAM_SHARED_DIR), chromium and the web build (scripts/build_web.sh).
 set -euo pipefail
 
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build"
+source "$(dirname "$0")/common.sh"
 run="$root/out/fr1_view"
 out="$root/bench/results/viewer_tum_fr1_xyz_300.png"
 size="1200x760"
@@ -19,14 +18,12 @@ while [[ $# -gt 0 ]]; do
     --run) run="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --size) size="$2"; shift 2 ;;
-    *) echo "viewer_screenshot.sh: unknown option '$1'" >&2; exit 2 ;;
+    *) bench_unknown_option "$1" ;;
   esac
 done
-segslam="$build/segslam"
-[[ -x "$segslam" ]] || { echo "viewer_screenshot.sh: $segslam not built (run ./setup.sh)" >&2; exit 1; }
-shared="${SEGSLAM_SHARED_DIR:-$root/../shared}"
+bench_require_segslam
 dataset="$shared/data/tum_fr1_xyz_300"
-[[ -d "$dataset" ]] || { echo "viewer_screenshot.sh: $dataset not found (set SEGSLAM_SHARED_DIR)" >&2; exit 1; }
+bench_require_dir "$dataset"
 
 if [[ ! -f "$run/CameraTrajectory.txt" ]]; then
   "$segslam" run --dataset "$dataset" --out "$run" --deterministic >/dev/null
