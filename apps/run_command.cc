@@ -103,6 +103,12 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
             : "own thread";
     fmt::print("  network    ran on {} of {} frames, {:.0f} ms each ({})\n", s.network_runs,
                s.frames, s.network_mean_ms, where);
+    const auto& own = s.own_masks;
+    fmt::print(
+        "  keyframes  {} of {} mapped with their own network mask, {:.1f} frames after they were "
+        "made (mean); {} of their points culled on moving objects\n",
+        own.keyframes_with_own_mask, own.keyframes_with_own_mask + own.keyframes_without,
+        own.mean_wait_frames, own.points_culled);
   }
   if (s.loop_closing) {
     int true_loops = 0;

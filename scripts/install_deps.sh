@@ -11,6 +11,9 @@ packages=(
   libopen3d-dev
   clang libclang-rt-14-dev clang-format
   libcpp-httplib-dev chromium
+  # The benches: ../shared/tools makes dynamic sequences with Debian's Python OpenCV, and
+  # stress-ng keeps a core busy to measure a shared CPU.
+  python3-opencv stress-ng
 )
 # The viewer's front end is built with node and npm (scripts/build_web.sh). Debian's packages are
 # used only when no node is installed: a NodeSource nodejs already provides npm and conflicts

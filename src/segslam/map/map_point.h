@@ -64,6 +64,14 @@ class MapPoint {
   std::uint64_t track_reference_frame = UINT64_MAX;
   // Frames whose depth saw through the point (tracking::pointsSeenThrough).
   int seen_through = 0;
+  // Keyframes whose own segmentation showed the point on a moving object
+  // (mapping::applyOwnMask).
+  int moving_votes = 0;
+  // Not yet checked by local mapping: made by a keyframe that local mapping has not taken up
+  // (it may wait for the keyframe's own mask), or a temporary point of tracking. Tracking lets
+  // such points refine a pose but not decide it (a person whom the masks missed can carry
+  // hundreds of them).
+  bool provisional = false;
 
  private:
   std::map<KeyFrame*, std::size_t, KeyFrameIdLess> observations_;

@@ -68,6 +68,16 @@ void buildProblem(LocalWindow& window) {
     problem.keyframes.push_back({keyframe->id, keyframe->T_cw, fixed});
     keyframe_index[keyframe] = k;
   }
+  // A window that no keyframe outside it sees into would be free to drift as a whole: its oldest
+  // keyframe holds it in place.
+  const bool anchored = std::any_of(problem.keyframes.begin(), problem.keyframes.end(),
+                                    [](const optim::BaKeyFrame& k) { return k.fixed; });
+  if (!anchored && problem.keyframes.size() > 1) {
+    std::min_element(
+        problem.keyframes.begin() + 1, problem.keyframes.end(),
+        [](const optim::BaKeyFrame& a, const optim::BaKeyFrame& b) { return a.id < b.id; })
+        ->fixed = true;
+  }
   for (std::size_t p = 0; p < window.points.size(); ++p) {
     const auto& point = window.points[p];
     problem.points.push_back({point->id, point->position});
@@ -100,6 +110,64 @@ bool LocalMapper::isIdle() const {
   return queue_.empty() && !busy_;
 }
 
+void LocalMapper::addKeyFrameMask(std::uint64_t frame_id, cv::Mat dilated_mask) {
+  {
+    std::lock_guard lock(queue_mutex_);
+    const bool waiting = std::any_of(queue_.begin(), queue_.end(), [&](const auto& keyframe) {
+      return keyframe->frame_id == frame_id;
+    });
+    if (!waiting) return;
+    own_masks_[frame_id] = std::move(dilated_mask);
+  }
+  queue_changed_.notify_all();
+}
+
+void LocalMapper::setTrackedFrame(std::uint64_t frame_id) {
+  {
+    std::lock_guard lock(queue_mutex_);
+    tracked_frame_ = frame_id;
+  }
+  queue_changed_.notify_all();
+}
+
+OwnMaskStats LocalMapper::ownMaskStats() const {
+  std::lock_guard lock(queue_mutex_);
+  OwnMaskStats stats = own_mask_stats_;
+  if (stats.keyframes_with_own_mask > 0) {
+    stats.mean_wait_frames = own_mask_wait_total_ / stats.keyframes_with_own_mask;
+  }
+  return stats;
+}
+
+bool LocalMapper::keyFrameReady() const {
+  std::lock_guard lock(queue_mutex_);
+  return frontReady();
+}
+
+bool LocalMapper::frontReady() const {
+  if (queue_.empty()) return false;
+  const std::uint64_t frame_id = queue_.front()->frame_id;
+  return stopping_ || options_.own_mask_wait_frames <= 0 || own_masks_.count(frame_id) > 0 ||
+         tracked_frame_ >= frame_id + static_cast<std::uint64_t>(options_.own_mask_wait_frames);
+}
+
+LocalMapper::ReadyKeyFrame LocalMapper::takeFront() {
+  ReadyKeyFrame ready{queue_.front(), cv::Mat()};
+  queue_.pop_front();
+  if (options_.own_mask_wait_frames <= 0) return ready;
+  const auto mask = own_masks_.find(ready.keyframe->frame_id);
+  if (mask == own_masks_.end()) {
+    ++own_mask_stats_.keyframes_without;
+    return ready;
+  }
+  ready.own_mask = std::move(mask->second);
+  own_masks_.erase(mask);
+  ++own_mask_stats_.keyframes_with_own_mask;
+  own_mask_wait_total_ += static_cast<double>(std::max(tracked_frame_, ready.keyframe->frame_id) -
+                                              ready.keyframe->frame_id);
+  return ready;
+}
+
 std::size_t LocalMapper::queuedKeyFrames() const {
   std::lock_guard lock(queue_mutex_);
   return queue_.size();
@@ -111,13 +179,12 @@ void LocalMapper::start() {
 }
 
 void LocalMapper::finish() {
-  if (!thread_.joinable()) return;
   {
     std::lock_guard lock(queue_mutex_);
     stopping_ = true;
   }
   queue_changed_.notify_all();
-  thread_.join();
+  if (thread_.joinable()) thread_.join();
 }
 
 void LocalMapper::pause() {
@@ -135,21 +202,25 @@ void LocalMapper::resume() {
 }
 
 void LocalMapper::processQueued() {
-  while (auto keyframe = popKeyFrame()) processKeyFrame(keyframe);
+  while (auto ready = popKeyFrame()) {
+    applyOwnMaskOf(*ready);
+    processKeyFrame(ready->keyframe);
+  }
 }
 
 void LocalMapper::run() {
   while (true) {
-    std::shared_ptr<map::KeyFrame> keyframe;
+    ReadyKeyFrame ready;
     {
       std::unique_lock lock(queue_mutex_);
-      queue_changed_.wait(lock, [this] { return !paused_ && (stopping_ || !queue_.empty()); });
+      queue_changed_.wait(
+          lock, [this] { return !paused_ && ((stopping_ && queue_.empty()) || frontReady()); });
       if (queue_.empty()) return;
-      keyframe = queue_.front();
-      queue_.pop_front();
+      ready = takeFront();
       busy_ = true;
     }
-    processKeyFrame(keyframe);
+    applyOwnMaskOf(ready);
+    processKeyFrame(ready.keyframe);
     {
       std::lock_guard lock(queue_mutex_);
       busy_ = false;
@@ -158,12 +229,23 @@ void LocalMapper::run() {
   }
 }
 
-std::shared_ptr<map::KeyFrame> LocalMapper::popKeyFrame() {
+std::optional<LocalMapper::ReadyKeyFrame> LocalMapper::popKeyFrame() {
   std::lock_guard lock(queue_mutex_);
-  if (queue_.empty()) return nullptr;
-  auto keyframe = queue_.front();
-  queue_.pop_front();
-  return keyframe;
+  if (!frontReady()) return std::nullopt;
+  return takeFront();
+}
+
+void LocalMapper::applyOwnMaskOf(const ReadyKeyFrame& ready) {
+  if (ready.own_mask.empty()) return;
+  OwnMaskOutcome outcome;
+  {
+    std::lock_guard lock(map_.mutex);
+    if (ready.keyframe->bad) return;
+    outcome = applyOwnMask(*ready.keyframe, ready.own_mask, options_.own_mask);
+  }
+  std::lock_guard lock(queue_mutex_);
+  own_mask_stats_.points_culled += outcome.points_culled;
+  own_mask_stats_.observations_dropped += outcome.observations_dropped;
 }
 
 void LocalMapper::processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe) {
@@ -173,7 +255,7 @@ void LocalMapper::processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe
     cullRecentPoints(*keyframe);
     fuseWithNeighbours(*keyframe);
   }
-  if (queuedKeyFrames() == 0 && map_.numKeyFrames() > 2) localBundleAdjustment(*keyframe);
+  if (!keyFrameReady() && map_.numKeyFrames() > 2) localBundleAdjustment(*keyframe);
   {
     std::lock_guard lock(map_.mutex);
     if (options_.cull_keyframes) cullRedundantKeyFrames(*keyframe);
@@ -185,6 +267,7 @@ void LocalMapper::processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe
 
 void LocalMapper::integrateKeyFrame(map::KeyFrame& keyframe) {
   for (const auto& [index, point] : keyframe.validMapPoints()) {
+    if (point->first_keyframe_id == keyframe.id) point->provisional = false;
     if (point->reference_keyframe == &keyframe) recent_points_.push_back(point);
     point->updateNormalAndDepth();
     point->updateDescriptor();

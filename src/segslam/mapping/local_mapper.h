@@ -4,12 +4,15 @@
 #include <condition_variable>
 #include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
 #include "segslam/map/map.h"
+#include "segslam/mapping/keyframe_mask.h"
 #include "segslam/tracking/keyframe_sink.h"
 
 namespace segslam::mapping {
@@ -23,6 +26,21 @@ struct LocalMapperOptions {
   int ba_max_keyframes = 20;
   double redundant_keyframe_share = 0.9;
   bool cull_keyframes = true;
+  // A keyframe waits in the queue for its own dynamic mask (addKeyFrameMask: a segmentation
+  // network's output for its frame, which arrives after tracking made the keyframe) for at most
+  // this many tracked frames, so that bundle adjustment, fusion and loop closing never see the
+  // points it made on a moving object. 0 = keyframes never wait.
+  int own_mask_wait_frames = 0;
+  OwnMaskOptions own_mask;
+};
+
+// What the keyframes' own masks did (LocalMapperOptions::own_mask_wait_frames).
+struct OwnMaskStats {
+  int keyframes_with_own_mask = 0;
+  int keyframes_without = 0;  // waited the longest, or their mask came too late
+  int points_culled = 0;
+  int observations_dropped = 0;
+  double mean_wait_frames = 0.0;  // of the keyframes whose mask came
 };
 
 // Local mapping: integrates each new keyframe into the covisibility graph, culls weak recent
@@ -38,13 +56,26 @@ class LocalMapper : public tracking::KeyFrameSink {
   LocalMapper& operator=(const LocalMapper&) = delete;
 
   void insertKeyFrame(std::shared_ptr<map::KeyFrame> keyframe) override;
+  // Idle: no keyframe queued, not even one waiting for its own mask: tracking makes keyframes
+  // more readily while mapping is idle, and keyframes made while a person is not yet masked
+  // would each wait with points on him.
   [[nodiscard]] bool isIdle() const override;
   [[nodiscard]] std::size_t queuedKeyFrames() const override;
 
+  // The own dynamic mask of the keyframe made from frame `frame_id` (CV_8UC1, non-zero = dynamic,
+  // dilated as the frames' masks are), from any thread. A mask that comes after its keyframe
+  // stopped waiting is dropped.
+  void addKeyFrameMask(std::uint64_t frame_id, cv::Mat dilated_mask);
+  // The last frame tracking has handled, from any thread: keyframes that have waited
+  // own_mask_wait_frames frames for their mask are mapped without it.
+  void setTrackedFrame(std::uint64_t frame_id);
+  [[nodiscard]] OwnMaskStats ownMaskStats() const;
+
   void start();
-  // Processes what is queued, then stops the thread.
+  // Processes what is queued, then stops the thread; keyframes stop waiting for their masks.
   void finish();
-  // Processes every queued keyframe on the calling thread.
+  // Processes the queued keyframes on the calling thread, up to the first that still waits for
+  // its own mask.
   void processQueued();
 
   // Called (without the map mutex) with each keyframe that survived its processing: the loop
@@ -61,7 +92,18 @@ class LocalMapper : public tracking::KeyFrameSink {
 
  private:
   void run();
-  std::shared_ptr<map::KeyFrame> popKeyFrame();
+  // Whether the queue's first keyframe may be mapped now (queue_mutex_ held).
+  [[nodiscard]] bool frontReady() const;
+  // The same, taking the lock: a keyframe ready behind the one in hand skips its local BA.
+  [[nodiscard]] bool keyFrameReady() const;
+  // The queue's first keyframe with its own mask (empty when it has none), if it is ready.
+  struct ReadyKeyFrame {
+    std::shared_ptr<map::KeyFrame> keyframe;
+    cv::Mat own_mask;
+  };
+  [[nodiscard]] ReadyKeyFrame takeFront();  // queue_mutex_ held
+  std::optional<ReadyKeyFrame> popKeyFrame();
+  void applyOwnMaskOf(const ReadyKeyFrame& ready);
   void processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe);
   void integrateKeyFrame(map::KeyFrame& keyframe);
   void cullRecentPoints(const map::KeyFrame& keyframe);
@@ -76,6 +118,10 @@ class LocalMapper : public tracking::KeyFrameSink {
   mutable std::mutex queue_mutex_;
   std::condition_variable queue_changed_;
   std::deque<std::shared_ptr<map::KeyFrame>> queue_;
+  std::map<std::uint64_t, cv::Mat> own_masks_;  // by frame id, until their keyframe is mapped
+  std::uint64_t tracked_frame_ = 0;
+  OwnMaskStats own_mask_stats_;
+  double own_mask_wait_total_ = 0.0;
   bool busy_ = false;
   bool stopping_ = false;
   bool paused_ = false;

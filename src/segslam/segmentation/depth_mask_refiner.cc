@@ -57,9 +57,12 @@ bool nearAnyDepth(float depth, const std::vector<float>& object_depths, double t
                      [&](float object) { return std::abs(depth - object) <= tolerance * object; });
 }
 
-// A region mostly outside the mask is the background the mask overlapped (a lagging mask's
-// trailing edge, a coarse network border), not the object; so is one at another depth than every
-// known object (background uncovered inside an old mask).
+// A region at another depth than every known object is background (uncovered inside an old
+// mask). A region mostly outside the mask is the background the mask overlapped (a lagging mask's
+// trailing edge, a coarse network border), or, at a known object's depth, possibly the object
+// joined by depth to a surface beside it (a person at a desk at his own depth): then its part
+// inside the mask is kept (keep_masked_part_of_joined_objects), for dropping it would drop the
+// object.
 cv::Mat objectRegions(const cv::Mat& mask, const cv::Mat& regions, const cv::Mat& depth,
                       int num_values, const std::vector<float>& object_depths,
                       const DepthRefinementOptions& options) {
@@ -76,18 +79,25 @@ cv::Mat objectRegions(const cv::Mat& mask, const cv::Mat& regions, const cv::Mat
     }
   }
   cv::Mat kept_values = cv::Mat::zeros(1, 256, CV_8UC1);
+  cv::Mat clipped_values = cv::Mat::zeros(1, 256, CV_8UC1);
   for (int value = 2; value < num_values; ++value) {
     const auto area = static_cast<int>(depths[value].size());
-    if (area == 0 || 2 * inside[value] < area) continue;
+    if (area == 0) continue;
     if (!object_depths.empty() && !nearAnyDepth(util::medianInPlace(depths[value]), object_depths,
                                                 options.object_depth_tolerance)) {
       continue;
     }
-    kept_values.at<std::uint8_t>(value) = 255;
+    const bool mostly_inside = 2 * inside[value] >= area;
+    if (!mostly_inside && (object_depths.empty() || !options.keep_masked_part_of_joined_objects)) {
+      continue;
+    }
+    (mostly_inside ? kept_values : clipped_values).at<std::uint8_t>(value) = 255;
   }
   cv::Mat object;
   cv::LUT(regions, kept_values, object);
-  return object;
+  cv::Mat clipped;
+  cv::LUT(regions, clipped_values, clipped);
+  return object | (clipped & mask);
 }
 
 // refineMaskByDepth on the part of the image that can matter: the search band around the mask.

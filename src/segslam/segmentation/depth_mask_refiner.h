@@ -16,6 +16,10 @@ struct DepthRefinementOptions {
   double object_depth_tolerance = 0.2;
   // Smaller parts of a mask get no depth of their own (noise, thin limbs at the border).
   int min_object_area_px = 200;
+  // A region at a known object's depth that lies mostly outside the mask keeps its part inside the
+  // mask: a person at a desk at his own depth is one region with it. Off, such a region is
+  // dropped, which tells an object that has merged into a larger surface (a lost object, gone).
+  bool keep_masked_part_of_joined_objects = true;
 };
 
 // Median depth of each connected part of the mask (parts of at least min_object_area_px pixels
@@ -27,10 +31,12 @@ std::vector<float> objectDepths(const cv::Mat& mask, const cv::Mat& depth,
 // over from an older frame) to the object's outline in the depth image: the object is the set of
 // pixels depth-connected to the mask's interior, searched within `band_px` around the mask.
 // A mask that lags behind a moving person thus follows the person as far as the band reaches,
-// instead of being grown blindly in every direction. A region is kept when most of it lies inside
-// the mask and, given object_depths (see objectDepths), when its depth is one of the objects':
-// the background a person has just uncovered is neither. Pixels of the mask without depth are
-// kept, and so are parts too thin to hold an interior. mask: CV_8UC1 (non-zero = object); depth:
+// instead of being grown blindly in every direction. Given object_depths (see objectDepths), a
+// region at another depth than the objects' is dropped: the background a person has just
+// uncovered. A region that lies mostly inside the mask is kept whole; one mostly outside it is
+// dropped, or, at an object's depth, kept where the mask covers it (see
+// keep_masked_part_of_joined_objects). Pixels of the mask without depth are kept, and so are
+// parts too thin to hold an interior. mask: CV_8UC1 (non-zero = object); depth:
 // CV_32FC1 metres (0 = none). Empty depth: unchanged.
 cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px,
                           const std::vector<float>& object_depths = {},

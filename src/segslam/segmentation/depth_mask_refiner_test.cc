@@ -55,6 +55,21 @@ TEST(RefineMaskByDepth, RegionsAtAnotherDepthThanTheObjectsAreDropped) {
   EXPECT_EQ(cv::countNonZero(refineMaskByDepth(old_mask, depth, 8) != old_mask), 0);
 }
 
+// A person standing at a desk at his own depth is one depth-connected region with it, mostly
+// outside his mask: the masked part stays (dropping the region dropped the person).
+TEST(RefineMaskByDepth, AnObjectJoinedByDepthToALargerSurfaceKeepsItsMaskedPart) {
+  const cv::Rect arm(70, 20, 14, 40);
+  cv::Mat depth(kHeight, kWidth, CV_32FC1, cv::Scalar(3.0f));
+  depth(arm).setTo(1.5f);
+  depth(cv::Rect(0, 60, kWidth, kHeight - 60)).setTo(1.5f);  // the desk, touching the arm
+  const cv::Mat mask = maskOf(arm);
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(mask, depth, 16, {1.5f}) != mask), 0);
+  DepthRefinementOptions dropping;
+  dropping.keep_masked_part_of_joined_objects = false;
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(mask, depth, 16, {1.5f}, dropping) & mask), 0)
+      << "off, the joined region goes";
+}
+
 // Only the band around the mask is searched: a frame of more image around the scene (a whole
 // number of seed steps wide, so the seeds stay on the same pixels) changes nothing.
 TEST(RefineMaskByDepth, ImageBeyondTheBandDoesNotChangeTheResult) {

@@ -40,18 +40,27 @@ void MaskStream::work() {
   util::lowerThisThreadsPriority(options_.thread_niceness);
   while (true) {
     SegmentationJob job;
+    bool keyframe = false;
     {
       std::unique_lock lock(mutex_);
-      changed_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
+      changed_.wait(
+          lock, [this] { return stopping_ || pending_.has_value() || !keyframe_jobs_.empty(); });
       if (stopping_) return;
-      job = std::move(*pending_);
-      pending_.reset();
+      keyframe = !keyframe_jobs_.empty();
+      if (keyframe) {
+        job = std::move(keyframe_jobs_.front());
+        keyframe_jobs_.pop_front();
+      } else {
+        job = std::move(*pending_);
+        pending_.reset();
+      }
       busy_ = true;
     }
     Result result = run(job);
+    result.keyframe = keyframe;
     {
       std::lock_guard lock(mutex_);
-      finished_ = std::move(result);
+      finished_.push_back(std::move(result));
       busy_ = false;
     }
     changed_.notify_all();
@@ -71,14 +80,14 @@ MaskStream::Result MaskStream::run(const SegmentationJob& job) {
   if (undecided) masks.dynamic = cv::Mat::zeros(job.current.bgr.size(), CV_8UC1);
   if (masks.labels.empty()) masks.labels = masks.dynamic.clone();
   std::vector<float> depths = objectDepths(masks.dynamic, job.current.depth, options_.refinement);
-  return {job.current.id, undecided, std::move(masks), std::move(depths), job.current.depth};
+  return {job.current.id, undecided, false, std::move(masks), std::move(depths), job.current.depth};
 }
 
 void MaskStream::submit(SegmentationJob job) {
   if (!segmenterWanted(job.current.id)) return;
   {
     std::lock_guard lock(mutex_);
-    if (busy_ || pending_) return;
+    if (busy_ || pending_ || !keyframe_jobs_.empty()) return;
     pending_ =
         SegmentationJob{copyOf(job.previous), copyOf(job.current), job.known_dynamic.clone()};
   }
@@ -99,16 +108,7 @@ SemanticMasks MaskStream::masksFor(std::uint64_t frame_id, const cv::Mat& bgr, c
     segmentSynchronously(job);
   } else {
     submit(job);
-    std::unique_lock lock(mutex_);
-    if (!latest_ && !finished_) {
-      changed_.wait(lock, [this] { return finished_.has_value(); });
-    }
-    if (finished_) {
-      Result result = std::move(*finished_);
-      finished_.reset();
-      lock.unlock();
-      collect(std::move(result), frame_id);
-    }
+    collectFinished(frame_id);
   }
   previous_ = job.current;
   SemanticMasks masks = carryLatest(frame_id, bgr.size());
@@ -118,6 +118,17 @@ SemanticMasks MaskStream::masksFor(std::uint64_t frame_id, const cv::Mat& bgr, c
     if (!lingering.empty()) masks.dynamic |= lingering;
   }
   return masks;
+}
+
+void MaskStream::collectFinished(std::uint64_t frame_id) {
+  std::unique_lock lock(mutex_);
+  if (!latest_ && finished_.empty()) {
+    changed_.wait(lock, [this] { return !finished_.empty(); });
+  }
+  std::vector<Result> finished = std::move(finished_);
+  finished_.clear();
+  lock.unlock();
+  for (Result& result : finished) collect(std::move(result), frame_id);
 }
 
 void MaskStream::segmentSynchronously(const SegmentationJob& job) {
@@ -137,17 +148,53 @@ void MaskStream::segmentSynchronously(const SegmentationJob& job) {
   }
 }
 
-void MaskStream::collect(Result result, std::uint64_t frame_id) {
-  if (result.undecided && latest_) return;
-  if (result.frame_id < frame_id) {
-    late_ = LateOutput{result.frame_id, result.masks.dynamic, result.depth};
+void MaskStream::segmentKeyFrame(std::uint64_t frame_id, const cv::Mat& bgr, const cv::Mat& depth) {
+  if (latest_ && latest_->frame_id == frame_id) {
+    late_.push_back(lateOutput(*latest_, true));
+    return;
   }
-  latest_ = std::move(result);
+  keyframes_asked_.insert(frame_id);
+  const bool on_its_way = last_submitted_ == frame_id || last_synchronous_run_ == frame_id;
+  if (on_its_way) return;
+  SegmentationJob job{StreamFrame{}, copyOf(StreamFrame{frame_id, bgr, depth}), cv::Mat()};
+  if (options_.synchronous) {
+    // A keyframe's output takes the place of the next scheduled one, as the network's thread
+    // would be busy with it; it is the newest frame, so `delayed_` stays in frame order.
+    last_synchronous_run_ = frame_id;
+    delayed_.push_back(run(job));
+    return;
+  }
+  {
+    std::lock_guard lock(mutex_);
+    keyframe_jobs_.push_back(std::move(job));
+  }
+  changed_.notify_all();
 }
 
-std::optional<LateOutput> MaskStream::takeLateOutput() {
-  std::optional<LateOutput> late = std::move(late_);
-  late_.reset();
+void MaskStream::collect(Result result, std::uint64_t frame_id) {
+  if (keyframes_asked_.erase(result.frame_id) > 0) {
+    late_.push_back(lateOutput(result, true));
+  } else if (result.frame_id < frame_id) {
+    late_.push_back(lateOutput(result, false));
+  }
+  if (result.undecided && latest_) return;
+  // Keyframe jobs jump the queue, so outputs need not come in frame order: the newest is carried.
+  if (!latest_ || result.frame_id > latest_->frame_id) latest_ = std::move(result);
+}
+
+LateOutput MaskStream::lateOutput(const Result& result, bool keyframe) const {
+  LateOutput late{result.frame_id, result.masks.dynamic,
+                  options_.carry_labels ? result.masks.labels : cv::Mat(), result.depth, keyframe};
+  if (options_.refine_fresh_masks && !result.depth.empty() && cv::countNonZero(late.dynamic) > 0) {
+    late.dynamic = refineMaskByDepth(late.dynamic, result.depth, options_.min_band_px,
+                                     result.object_depths, options_.refinement);
+  }
+  return late;
+}
+
+std::vector<LateOutput> MaskStream::takeLateOutputs() {
+  std::vector<LateOutput> late = std::move(late_);
+  late_.clear();
   return late;
 }
 
@@ -206,8 +253,10 @@ cv::Mat MaskStream::lingeringObjects(const cv::Mat& fitted, const cv::Mat& depth
       // well beyond its area has joined a larger surface at its depth (the desk the person
       // stood in front of): the person is gone. (The lost part may be a little short of the
       // object, hence the margin.)
+      DepthRefinementOptions merging = options_.refinement;
+      merging.keep_masked_part_of_joined_objects = false;
       moved = refineMaskByDepth(moved, depth, options_.growth_px_per_frame + options_.min_band_px,
-                                lingering_->object_depths, options_.refinement);
+                                lingering_->object_depths, merging);
       if (2 * cv::countNonZero(moved) > 3 * lingering_->area) moved = cv::Mat();
     }
     lingering_->frame_id = frame_id;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -81,18 +82,22 @@ struct SegmentationJob {
 using Segment = std::function<SemanticMasks(const SegmentationJob&)>;
 
 // An output that arrived after its frame had been handed on: the map can still be cleaned of
-// what it shows (tracking::pointsOnDynamicSurface).
+// what it shows. A keyframe's own output (MaskStream::segmentKeyFrame) tells local mapping which
+// of the keyframe's points lie on moving objects; any other tells tracking which recent map
+// points do (tracking::pointsOnDynamicSurface).
 struct LateOutput {
   std::uint64_t frame_id = 0;
-  cv::Mat dynamic;  // CV_8UC1, 255 = dynamic, as the segmenter gave it
+  cv::Mat dynamic;  // CV_8UC1, 255 = dynamic: the segmenter's output, snapped to depth as fresh
+  cv::Mat labels;   // CV_8UC1, the segmenter's labels; empty unless carry_labels
   cv::Mat depth;    // CV_32FC1 metres of that frame, or empty
+  bool keyframe = false;  // asked for by segmentKeyFrame()
 };
 
 // Masks for every frame without waiting for a slow segmenter (a 60-300 ms network, geometric
 // segmentation): the newest finished output is carried to the current frame by optical flow
 // (MaskPropagator) and snapped to the objects' depth outlines. The segmenter runs on its own
-// thread, one frame in flight. Only the first frame waits for its own output, so that the map
-// never starts on people.
+// thread, one frame in flight; keyframes come first (segmentKeyFrame), then the newest frame.
+// Only the first frame waits for its own output, so that the map never starts on people.
 class MaskStream {
  public:
   // `propagator`: optical flow shared with other streams over the same frames (fused masks
@@ -114,8 +119,16 @@ class MaskStream {
   // (BusyShare); may be called from any thread. Unset, tracking counts as having CPU to spare.
   void setTrackingBusyShare(double share);
 
-  // The output collected by the last masksFor() when it belongs to an earlier frame; taken once.
-  [[nodiscard]] std::optional<LateOutput> takeLateOutput();
+  // Asks for the segmenter's own output of a frame already handed on (a keyframe, whose map
+  // points wait for it), ahead of every other frame, keyframes in order. The output comes
+  // back once, through takeLateOutputs() with `keyframe` set: as soon as it is finished, or in
+  // synchronous mode `latency_frames` frames after its frame. A frame whose output is already
+  // there or on its way is not segmented twice.
+  void segmentKeyFrame(std::uint64_t frame_id, const cv::Mat& bgr, const cv::Mat& depth);
+
+  // The outputs collected since the last call that belong to frames handed on before, oldest
+  // first; each is taken once.
+  [[nodiscard]] std::vector<LateOutput> takeLateOutputs();
 
   // Segmenter runs finished so far and their mean time.
   [[nodiscard]] int runs() const;
@@ -125,6 +138,7 @@ class MaskStream {
   struct Result {
     std::uint64_t frame_id;
     bool undecided;  // the segmenter could not tell: masks are all zero
+    bool keyframe;   // a segmentKeyFrame() job
     SemanticMasks masks;
     std::vector<float> object_depths;  // of the dynamic objects, in the segmented frame
     cv::Mat depth;                     // of the segmented frame
@@ -156,7 +170,9 @@ class MaskStream {
   void submit(SegmentationJob job);
   [[nodiscard]] bool segmenterWanted(std::uint64_t frame_id) const;
   void segmentSynchronously(const SegmentationJob& job);
+  void collectFinished(std::uint64_t frame_id);
   void collect(Result result, std::uint64_t frame_id);
+  [[nodiscard]] LateOutput lateOutput(const Result& result, bool keyframe) const;
   [[nodiscard]] Result run(const SegmentationJob& job);
   [[nodiscard]] cv::Mat fitToObjects(const cv::Mat& dynamic, const cv::Mat& depth,
                                      std::uint64_t frame_id) const;
@@ -170,8 +186,9 @@ class MaskStream {
   std::optional<Lingering> lingering_;
   // The previous frame's mask from the outputs, and the output it came from.
   std::optional<Carried> last_fitted_;
-  std::optional<LateOutput> late_;
-  std::deque<Result> delayed_;  // synchronous outputs waiting for their latency
+  std::vector<LateOutput> late_;
+  std::set<std::uint64_t> keyframes_asked_;  // frames whose output goes back as a keyframe's
+  std::deque<Result> delayed_;  // synchronous outputs waiting for their latency, by frame
   std::optional<std::uint64_t> last_synchronous_run_;
   std::atomic<double> tracking_busy_share_{0.0};
   std::optional<std::uint64_t> last_submitted_;
@@ -179,7 +196,9 @@ class MaskStream {
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::optional<SegmentationJob> pending_;  // frame waiting for the segmenter
-  std::optional<Result> finished_;          // output not yet collected
+  // Waiting too, before pending_, oldest first: local mapping takes keyframes in that order.
+  std::deque<SegmentationJob> keyframe_jobs_;
+  std::vector<Result> finished_;  // outputs not yet collected
   bool busy_ = false;
   bool stopping_ = false;
   int runs_ = 0;

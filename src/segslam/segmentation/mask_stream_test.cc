@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <opencv2/imgcodecs.hpp>
@@ -119,16 +120,128 @@ TEST(MaskStream, SynchronousLatencyDeliversOutputsLateAndReportsThem) {
   std::vector<std::uint64_t> late_frames;
   for (std::uint64_t frame = 0; frame < 10; ++frame) {
     static_cast<void>(stream.masksFor(frame, bgr, cv::Mat()));
-    if (auto late = stream.takeLateOutput()) {
-      EXPECT_EQ(late->frame_id + 2, frame);
-      EXPECT_EQ(cv::countNonZero(late->dynamic), static_cast<int>(late->frame_id) + 1);
-      late_frames.push_back(late->frame_id);
+    for (const LateOutput& late : stream.takeLateOutputs()) {
+      EXPECT_EQ(late.frame_id + 2, frame);
+      EXPECT_EQ(cv::countNonZero(late.dynamic), static_cast<int>(late.frame_id) + 1);
+      EXPECT_FALSE(late.keyframe);
+      late_frames.push_back(late.frame_id);
     }
-    EXPECT_FALSE(stream.takeLateOutput().has_value()) << "taken once";
+    EXPECT_TRUE(stream.takeLateOutputs().empty()) << "taken once";
   }
   // Frame 0's output is used at once (the first frame waits); frame 8's is not due before 10.
   EXPECT_EQ(late_frames, std::vector<std::uint64_t>{4});
   EXPECT_EQ(stream.runs(), 3);
+}
+
+// Keyframe outputs taken from the stream over frames [first, last), by the frame they came with.
+std::vector<std::pair<std::uint64_t, std::uint64_t>> keyFrameOutputs(MaskStream& stream,
+                                                                     std::uint64_t first,
+                                                                     std::uint64_t last,
+                                                                     const cv::Mat& bgr) {
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> outputs;
+  for (std::uint64_t frame = first; frame < last; ++frame) {
+    static_cast<void>(stream.masksFor(frame, bgr, cv::Mat()));
+    for (const LateOutput& late : stream.takeLateOutputs()) {
+      if (!late.keyframe) continue;
+      EXPECT_EQ(cv::countNonZero(late.dynamic), static_cast<int>(late.frame_id) + 1);
+      outputs.emplace_back(late.frame_id, frame);
+    }
+  }
+  return outputs;
+}
+
+TEST(MaskStream, SynchronousKeyFrameOutputComesBackOnceAfterTheLatency) {
+  MaskStreamOptions options;
+  options.synchronous = true;
+  options.interval = 4;
+  options.latency_frames = 2;
+  MaskStream stream(countingSegment(), options);
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  ASSERT_TRUE(keyFrameOutputs(stream, 0, 6, bgr).empty());
+  stream.segmentKeyFrame(5, bgr, cv::Mat());  // frame 5 is handed on; the network was not due
+  const auto outputs = keyFrameOutputs(stream, 6, 12, bgr);
+  ASSERT_EQ(outputs.size(), 1u);
+  EXPECT_EQ(outputs[0], std::make_pair(std::uint64_t{5}, std::uint64_t{7}));
+  // Frames 0 and 4 as scheduled, the keyframe 5, then 9: the schedule counts from the keyframe.
+  EXPECT_EQ(stream.runs(), 4);
+}
+
+TEST(MaskStream, AKeyFrameWhoseOutputIsThereAlreadyIsNotSegmentedAgain) {
+  MaskStreamOptions options;
+  options.synchronous = true;
+  options.interval = 4;
+  MaskStream stream(countingSegment(), options);
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  static_cast<void>(keyFrameOutputs(stream, 0, 5, bgr));  // runs on frames 0 and 4
+  stream.segmentKeyFrame(4, bgr, cv::Mat());
+  const auto outputs = keyFrameOutputs(stream, 5, 6, bgr);
+  ASSERT_EQ(outputs.size(), 1u);
+  EXPECT_EQ(outputs[0].first, 4u);
+  EXPECT_EQ(stream.runs(), 2);
+}
+
+// Segments only when allowed to, so that a test can queue jobs behind a busy segmenter; records
+// the order in which it was given the frames.
+struct GatedSegmenter {
+  std::mutex mutex;
+  std::condition_variable changed;
+  int allowed = 0;
+  std::vector<std::uint64_t> order;
+
+  void allow(int runs) {
+    {
+      std::lock_guard lock(mutex);
+      allowed += runs;
+    }
+    changed.notify_all();
+  }
+
+  void waitUntilGiven(std::size_t frames) {
+    std::unique_lock lock(mutex);
+    changed.wait(lock, [&] { return order.size() >= frames; });
+  }
+};
+
+Segment gatedSegment(const std::shared_ptr<GatedSegmenter>& gate) {
+  return [gate](const SegmentationJob& job) {
+    {
+      std::unique_lock lock(gate->mutex);
+      gate->order.push_back(job.current.id);
+      gate->changed.notify_all();
+      gate->changed.wait(lock, [&] { return gate->allowed > 0; });
+      --gate->allowed;
+    }
+    return countingSegment()(job);
+  };
+}
+
+TEST(MaskStream, KeyFramesAreSegmentedBeforeNewerFrames) {
+  auto gate = std::make_shared<GatedSegmenter>();
+  MaskStream stream(gatedSegment(gate));
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  gate->allow(1);
+  static_cast<void>(stream.masksFor(0, bgr, cv::Mat()));  // waits for frame 0's output
+  static_cast<void>(stream.masksFor(1, bgr, cv::Mat()));  // frame 1 goes to the segmenter
+  gate->waitUntilGiven(2);
+  stream.segmentKeyFrame(0, bgr, cv::Mat());              // there already: back at once
+  stream.segmentKeyFrame(1, bgr, cv::Mat());              // on its way: not queued twice
+  static_cast<void>(stream.masksFor(2, bgr, cv::Mat()));  // segmenter busy: not queued
+  stream.segmentKeyFrame(2, bgr, cv::Mat());              // queued first
+  gate->allow(2);
+  std::vector<std::uint64_t> keyframes;
+  for (std::uint64_t frame = 3; frame < 200 && keyframes.size() < 3; ++frame) {
+    static_cast<void>(stream.masksFor(frame, bgr, cv::Mat()));
+    for (const LateOutput& late : stream.takeLateOutputs()) {
+      if (late.keyframe) keyframes.push_back(late.frame_id);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_EQ(keyframes, (std::vector<std::uint64_t>{0, 1, 2}));
+  gate->allow(1000);
+  std::lock_guard lock(gate->mutex);
+  ASSERT_GE(gate->order.size(), 3u);
+  EXPECT_EQ(gate->order[1], 1u);
+  EXPECT_EQ(gate->order[2], 2u) << "the keyframe comes before frame 3 and later ones";
 }
 
 // Frame 0: an object at the left edge. Frames 1-3: the segmenter cannot tell (empty mask).
@@ -150,7 +263,7 @@ TEST(MaskStream, AnUndecidedOutputKeepsTheObjectsOfTheOneBefore) {
   const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
   for (std::uint64_t frame = 0; frame <= 3; ++frame) {
     EXPECT_GE(cv::countNonZero(stream.masksFor(frame, bgr, cv::Mat()).dynamic), 20 * 20) << frame;
-    EXPECT_FALSE(stream.takeLateOutput().has_value());
+    EXPECT_TRUE(stream.takeLateOutputs().empty());
   }
   EXPECT_EQ(cv::countNonZero(stream.masksFor(4, bgr, cv::Mat()).dynamic), 0);
   EXPECT_EQ(stream.runs(), 5);

@@ -159,15 +159,22 @@ FrameMasks FrameMaskSource::masks(const io::RgbdFrame& frame, std::size_t index)
     const cv::Mat labels =
         network.labels.empty() ? cv::Mat() : semantic_classes_->apply(network.labels);
     masks = {network.dynamic, labels, cv::Mat(), {}};
-    if (auto late = semantic_->takeLateOutput()) masks.late.push_back(std::move(*late));
+    for (auto& late : semantic_->takeLateOutputs()) {
+      if (!late.labels.empty()) late.labels = semantic_classes_->apply(late.labels);
+      masks.late.push_back(std::move(late));
+    }
   }
   if (geometric_) {
     const cv::Mat moving =
         geometric_->masksFor(index, frame.rgb, frame.depth, masks.dynamic).dynamic;
     masks.dynamic = masks.dynamic.empty() ? moving : (masks.dynamic | moving);
-    if (auto late = geometric_->takeLateOutput()) masks.late.push_back(std::move(*late));
+    for (auto& late : geometric_->takeLateOutputs()) masks.late.push_back(std::move(late));
   }
   return masks;
+}
+
+void FrameMaskSource::segmentKeyFrame(const io::RgbdFrame& frame, std::size_t index) {
+  if (semantic_) semantic_->segmentKeyFrame(index, frame.rgb, frame.depth);
 }
 
 cv::Mat FrameMaskSource::dynamicMask(const io::RgbdFrame& frame, std::size_t index) {

@@ -58,7 +58,8 @@ struct FrameMasks {
   cv::Mat dynamic;    // CV_8UC1, 255 = dynamic; empty = none
   cv::Mat labels;     // CV_8UC1 core::SemanticClass ids; empty = unknown
   cv::Mat instances;  // CV_16UC1 instance ids, 0 = none; empty = none
-  // Segmenter outputs for earlier frames that arrived with this one.
+  // Segmenter outputs for earlier frames that arrived with this one (labels, when there are any,
+  // as core::SemanticClass ids).
   std::vector<segmentation::LateOutput> late;
 };
 
@@ -76,6 +77,12 @@ class FrameMaskSource {
   // they are the dataset's (labels.txt, instances.txt), when it has them.
   FrameMasks masks(const io::RgbdFrame& frame, std::size_t index);
   cv::Mat dynamicMask(const io::RgbdFrame& frame, std::size_t index);
+  // Asks the network (semantic, fused masks) for the own output of a frame handed on earlier,
+  // ahead of other frames: it comes back in a later frame's FrameMasks::late with `keyframe` set.
+  // Nothing for the other sources.
+  void segmentKeyFrame(const io::RgbdFrame& frame, std::size_t index);
+  // Whether segmentKeyFrame() delivers outputs (a network is in use).
+  [[nodiscard]] bool segmentsKeyFrames() const { return semantic_ != nullptr; }
 
   // Whether masks are computed (semantic, geometric, fused) rather than read (oracle) or none.
   [[nodiscard]] bool segments() const { return semantic_ || geometric_; }

@@ -15,6 +15,7 @@
 #include "segslam/eval/evaluation_report.h"
 #include "segslam/io/trajectory_io.h"
 #include "segslam/system/frame_player.h"
+#include "segslam/system/map_keyframe_feed.h"
 #include "segslam/util/elapsed_time.h"
 #include "segslam/util/error.h"
 
@@ -140,12 +141,18 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     auto mask_options = options.masks;
     mask_options.carry_labels = options.build_map;  // only the object map reads labels
     FrameMaskSource masks(dataset, mask_options, options.slam.deterministic);
-    SlamSystem slam(dataset.camera(), options.slam);
+    auto slam_options = options.slam;
+    if (masks.segmentsKeyFrames()) {
+      slam_options.mapper.own_mask_wait_frames = options.keyframe_mask_wait_frames;
+    }
+    SlamSystem slam(dataset.camera(), slam_options);
     std::optional<dense::MapBuilder> map_builder;
+    std::optional<MapKeyFrameFeed> map_feed;
     if (options.build_map) {
       auto map_options = options.map;
       map_options.keyframe.mask_dilation_px = options.slam.mask_dilation_px;
       map_builder.emplace(dataset.camera(), map_options);
+      map_feed.emplace(*map_builder, masks.segmentsKeyFrames());
     }
     // Ground-truth masks feed oracle masks only; labels and instances only the object map.
     const io::FrameLayers layers{options.masks.source == MaskSource::kOracle, options.build_map,
@@ -158,20 +165,30 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       const FrameMasks& frame_masks = played.masks;
       if (options.realtime) realtime_lag_ms.push_back(played.lag_ms);
       for (const auto& late : frame_masks.late) {
-        summary.points_culled_by_late_masks +=
-            slam.applyLateMask(late.frame_id, late.dynamic, late.depth);
+        if (late.keyframe) {
+          slam.addKeyFrameMask(late.frame_id, late.dynamic);
+          if (map_feed) map_feed->addOwnMask(late);
+        } else {
+          summary.points_culled_by_late_masks +=
+              slam.applyLateMask(late.frame_id, late.dynamic, late.depth);
+        }
       }
       stats.push_back(
           slam.processFrame(frame.timestamp, frame.rgb, frame.depth, frame_masks.dynamic));
       stats.back().mask_ms = played.mask_ms;
       stats.back().tracking_ms += played.mask_ms;
-      if (map_builder && stats.back().keyframe) {
-        map_builder->addKeyFrame(stats.back().frame_id, frame.timestamp,
-                                 {frame.rgb, frame.depth, frame_masks.dynamic, frame_masks.labels,
-                                  frame_masks.instances});
+      if (stats.back().keyframe) {
+        masks.segmentKeyFrame(frame, i);
+        if (map_feed) {
+          map_feed->addKeyFrame(stats.back().frame_id, frame.timestamp,
+                                {frame.rgb, frame.depth, frame_masks.dynamic, frame_masks.labels,
+                                 frame_masks.instances});
+        }
       }
+      if (map_feed) map_feed->setTrackedFrame(i);
       if (on_frame) on_frame(stats.back());
     }
+    if (map_feed) map_feed->flush();
     summary.tracking_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - first_frame).count();
     summary.network_runs = masks.networkRuns();
@@ -195,6 +212,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     summary.bundle_adjustment_seconds = slam.bundleAdjustmentSeconds();
     summary.loop_closing = options.slam.loop_closing;
     summary.loops = slam.loopClosingStats();
+    summary.own_masks = slam.ownMaskStats();
     checkLoops(dataset, summary);
     evaluate(dataset, options, out_dir, trajectory, summary);
   }
@@ -271,6 +289,12 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
     json["network_runs"] = summary.network_runs;
     json["network_mean_ms"] = summary.network_mean_ms;
     json["points_culled_by_late_masks"] = summary.points_culled_by_late_masks;
+    const mapping::OwnMaskStats& own = summary.own_masks;
+    json["keyframe_own_masks"] = {{"keyframes_with_own_mask", own.keyframes_with_own_mask},
+                                  {"keyframes_without", own.keyframes_without},
+                                  {"mean_wait_frames", own.mean_wait_frames},
+                                  {"points_culled", own.points_culled},
+                                  {"observations_dropped", own.observations_dropped}};
   }
   if (summary.map) json["map"] = toJson(*summary.map);
   if (summary.evaluation) {

@@ -30,6 +30,9 @@ struct SequenceRunOptions {
   // timestamps, from the first frame on) instead of as fast as they load: the timing a robot
   // sees, where the segmentation network has the frame interval to keep up.
   bool realtime = false;
+  // With a segmentation network, local mapping waits at most this many frames for each
+  // keyframe's own network output (SlamOptions::mapper.own_mask_wait_frames).
+  int keyframe_mask_wait_frames = 20;
 };
 
 struct TimingSummary {
@@ -62,6 +65,7 @@ struct SequenceRunSummary {
   int network_runs = 0;  // semantic masks: frames the network actually ran on
   double network_mean_ms = 0.0;
   int points_culled_by_late_masks = 0;
+  mapping::OwnMaskStats own_masks;
   std::optional<eval::TrajectoryEvaluation> evaluation;
   std::optional<MapSummary> map;
   bool loop_closing = false;

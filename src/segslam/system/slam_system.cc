@@ -90,12 +90,21 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
     stats.matches = result.matches;
     stats.keyframe = result.new_keyframe;
   }
-  if (options_.deterministic) {
-    mapper_.processQueued();
-    if (loop_closer_) loop_closer_->processQueued();
-  }
+  mapper_.setTrackedFrame(stats.frame_id);
+  if (options_.deterministic) mapInline();
   stats.tracking_ms = util::millisecondsSince(start);
   return stats;
+}
+
+void SlamSystem::mapInline() {
+  mapper_.processQueued();
+  if (loop_closer_) loop_closer_->processQueued();
+}
+
+void SlamSystem::addKeyFrameMask(std::uint64_t frame_id, const cv::Mat& dynamic_mask) {
+  mapper_.addKeyFrameMask(frame_id,
+                          feature::dilateDynamicMask(dynamic_mask, options_.mask_dilation_px));
+  if (options_.deterministic) mapInline();
 }
 
 int SlamSystem::applyLateMask(std::uint64_t frame_id, const cv::Mat& dynamic_mask,

@@ -79,6 +79,10 @@ class SlamSystem {
   // A dynamic mask for an earlier frame (frame_id as processFrame numbered it), arrived late:
   // map points on what it marks are culled. Returns how many.
   int applyLateMask(std::uint64_t frame_id, const cv::Mat& dynamic_mask, const cv::Mat& depth_m);
+  // The own dynamic mask (CV_8UC1, non-zero = dynamic, not dilated) of the keyframe made from
+  // frame `frame_id`, which local mapping waits for (SlamOptions::mapper.own_mask_wait_frames):
+  // the keyframe's points on what it marks are culled before they are mapped.
+  void addKeyFrameMask(std::uint64_t frame_id, const cv::Mat& dynamic_mask);
   // Waits for local mapping to finish its queue; call before reading the trajectories.
   void finish();
 
@@ -92,8 +96,12 @@ class SlamSystem {
   }
   // Empty when loop closing is off.
   [[nodiscard]] loop::LoopClosingStats loopClosingStats() const;
+  [[nodiscard]] mapping::OwnMaskStats ownMaskStats() const { return mapper_.ownMaskStats(); }
 
  private:
+  // Deterministic mode: local mapping and loop closing of what is queued, on this thread.
+  void mapInline();
+
   SlamOptions options_;
   std::shared_ptr<const map::FrameCamera> camera_;
   feature::OrbExtractor extractor_;

@@ -104,6 +104,7 @@ bool Tracker::initialise() {
   auto keyframe = map_.createKeyFrame(current_);
   for (std::size_t i : keypointsByDepth(current_)) {
     auto point = map_.createMapPoint(keyframe->unproject(i), keyframe.get());
+    point->provisional = true;
     point->addObservation(keyframe.get(), i);
     keyframe->addMapPoint(point, i);
     point->updateDescriptor();
@@ -133,6 +134,7 @@ void Tracker::addVisualOdometryPoints() {
     if (last_.depth[i] > close_depth && added > options_.min_new_points_per_keyframe) break;
     const Eigen::Vector3d position = last_.T_cw.inverse() * last_.unproject(i);
     auto point = std::make_shared<map::MapPoint>(UINT64_MAX, position, nullptr);
+    point->provisional = true;
     point->descriptor = last_.descriptors.row(static_cast<int>(i)).clone();
     last_.map_points[i] = point;
     last_.outlier[i] = false;
@@ -192,29 +194,26 @@ std::vector<std::shared_ptr<map::KeyFrame>> Tracker::relocalisationCandidates() 
 
 int Tracker::optimiseCurrentPose() {
   std::vector<optim::PoseObservation> observations;
+  std::vector<bool> provisional;
   std::vector<std::size_t> keypoint_of;
   for (std::size_t i = 0; i < current_.size(); ++i) {
     const auto& point = current_.map_points[i];
     if (!point || point->bad) continue;
     observations.push_back({point->position, current_.observation(i)});
+    provisional.push_back(point->provisional);
     keypoint_of.push_back(i);
   }
   if (observations.size() < static_cast<std::size_t>(kMinPoseMatches)) return 0;
-  const auto result = optim::optimizePose(current_.camera->stereo, current_.T_cw, observations);
+  const auto result = optimizePoseTrustingCheckedMatches(
+      current_.camera->stereo, current_.T_cw, observations, provisional, options_.checked_pose);
   current_.T_cw = result.T_cw;
   current_.has_pose = true;
-  int inliers = 0;
   for (std::size_t k = 0; k < keypoint_of.size(); ++k) {
     const std::size_t i = keypoint_of[k];
-    if (result.inlier[k]) {
-      current_.outlier[i] = false;
-      ++inliers;
-    } else {
-      current_.map_points[i].reset();
-      current_.outlier[i] = false;
-    }
+    if (!result.inlier[k]) current_.map_points[i].reset();
+    current_.outlier[i] = false;
   }
-  return inliers;
+  return result.num_inliers;
 }
 
 bool Tracker::trackLocalMap() {
@@ -387,6 +386,7 @@ void Tracker::addNewMapPoints(map::KeyFrame& keyframe) {
       ++created_or_tracked;
     } else {
       auto point = map_.createMapPoint(keyframe.unproject(i), &keyframe);
+      point->provisional = true;
       point->addObservation(&keyframe, i);
       keyframe.addMapPoint(point, i);
       point->updateDescriptor();

@@ -8,6 +8,7 @@
 
 #include "segslam/map/frame.h"
 #include "segslam/map/map.h"
+#include "segslam/tracking/checked_pose.h"
 #include "segslam/tracking/free_space_check.h"
 #include "segslam/tracking/keyframe_database.h"
 #include "segslam/tracking/keyframe_decision.h"
@@ -31,6 +32,8 @@ struct TrackerOptions {
   double new_point_depth_factor = 2.0;
   int max_local_keyframes = 80;
   int min_inliers = 30;
+  // Provisional map points (MapPoint::provisional) may refine a pose but not decide it.
+  CheckedPoseOptions checked_pose;
   int min_inliers_after_relocalisation = 50;
   // A lost frame is matched against the keyframes that look most like it (by bag of words, given
   // a vocabulary: the camera may have been carried anywhere in the map), then against the most
@@ -93,6 +96,7 @@ class Tracker {
   bool trackLocalMap();
   void addVisualOdometryPoints();
   int optimiseCurrentPose();
+
   void updateLocalKeyFrames();
   void updateLocalPoints();
   int searchLocalMap();

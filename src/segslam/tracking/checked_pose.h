@@ -1,0 +1,32 @@
+#pragma once
+
+#include <vector>
+
+#include "segslam/geometry/pose.h"
+#include "segslam/optim/pose_optimizer.h"
+
+namespace segslam::tracking {
+
+struct CheckedPoseOptions {
+  // The checked matches decide only when at least this many of them fit their own pose.
+  int min_checked = 30;
+  // Poses from all matches and from the checked ones alone that differ by less than this agree:
+  // the provisional matches are then as good as the checked ones (a static scene, or a person
+  // already masked), and the pose from all of them stands.
+  double agreement_m = 0.005;
+  double agreement_deg = 0.3;
+};
+
+// Motion-only pose optimisation (optim::optimizePose) over matches of which some are
+// provisional: to map points that no keyframe's own mask has checked yet (MapPoint::provisional).
+// A person whom the masks missed can carry as many provisional points as the static scene has
+// checked ones, all moving with him: estimated together, they drag the pose along. When the pose
+// of the checked matches alone disagrees with that of all matches, the provisional matches that
+// do not fit it are outliers, and the pose is refined from the checked pose with the rest.
+// `provisional` has one flag per match; inlier flags of the result are per match.
+[[nodiscard]] optim::PoseOptimizationResult optimizePoseTrustingCheckedMatches(
+    const optim::StereoIntrinsics& intrinsics, const geometry::Pose& initial_T_cw,
+    const std::vector<optim::PoseObservation>& matches, const std::vector<bool>& provisional,
+    const CheckedPoseOptions& options = {});
+
+}  // namespace segslam::tracking
