@@ -168,7 +168,11 @@ bool Tracker::relocalise() {
   const auto pose = relocaliseAgainstKeyFrames(current_, relocalisationCandidates());
   if (!pose) return false;
   current_.T_cw = *pose;
-  if (optimiseCurrentPose() < options_.min_inliers_after_relocalisation) return false;
+  // The candidate keyframe's own points need only place the frame: the local map around it,
+  // searched next (trackLocalMap), must then bring the inliers up to
+  // min_inliers_after_relocalisation. One keyframe seldom shows that many through a person or
+  // motion blur, and the camera stayed lost where the local map would have found it.
+  if (optimiseCurrentPose() < options_.min_inliers) return false;
   last_relocalisation_frame_id_ = current_.id;
   spdlog::info("frame {}: relocalised against keyframe {}", current_.id,
                current_.reference_keyframe->id);
