@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 machine to a finished run: installs dependencies, builds
-# (Release with debug info) and runs the main job on the embedded default, a synthetic dynamic
-# sequence that segslam generates itself (no downloads, no external data).
+# build/ (Release with debug info, the configuration test.sh builds too, so that it compiles nothing
+# again) and runs the main job on the embedded default, a synthetic dynamic sequence that segslam
+# generates itself (no downloads, no external data).
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/install_deps.sh

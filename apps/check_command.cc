@@ -11,6 +11,7 @@
 #include "segslam/system/dataset_check.h"
 #include "segslam/util/error.h"
 #include "segslam/util/logging.h"
+#include "segslam/util/output_folder.h"
 #include "segslam/util/progress.h"
 
 namespace segslam::apps {
@@ -44,6 +45,10 @@ void printSummary(const CheckOptions& options, const io::TumDataset& dataset,
   fmt::print(
       "  frames        {} checked, {:.2f} s of recording at {:.1f} Hz ({:.0f} frames/s read)\n",
       check.frames, check.duration_s, check.mean_frame_rate, check.frames / seconds);
+  if (check.skipped_frames > 0) {
+    fmt::print("  damaged       {} frames skipped for damaged images (the log names them)\n",
+               check.skipped_frames);
+  }
   fmt::print("  depth         {:.1f} % valid, {:.2f}-{:.2f} m, colour/depth gap <= {:.1f} ms\n",
              100.0 * check.valid_depth_share, check.min_depth_m, check.max_depth_m,
              1000.0 * check.max_rgb_depth_gap_s);
@@ -59,7 +64,7 @@ void printSummary(const CheckOptions& options, const io::TumDataset& dataset,
 void checkCommand(const CheckOptions& options) {
   const auto dataset = openDataset(options);
 
-  std::filesystem::create_directories(options.out_dir);
+  util::createOutputFolder(options.out_dir);
   util::addLogFile(options.out_dir / "check.log");
   spdlog::info("dataset {}: {} frames, camera {}", options.dataset.string(), dataset.size(),
                dataset.cameraSource());

@@ -11,6 +11,7 @@
 #include "segslam/eval/evaluation_report.h"
 #include "segslam/eval/trajectory_evaluation.h"
 #include "segslam/io/trajectory_io.h"
+#include "segslam/util/output_folder.h"
 
 namespace segslam::apps {
 
@@ -46,7 +47,15 @@ eval::TrajectoryEvaluationOptions evaluationOptions(const TrajectoryEvalSettings
   return options;
 }
 
+// Before evaluating: a bad output path fails at once rather than after the table is printed.
+void createOutputFolders(const TrajectoryEvalSettings& s) {
+  if (!s.plots.empty()) util::createOutputFolder(s.plots);
+  if (s.json && !s.json->empty()) util::createFolderFor(*s.json);
+  if (!s.aligned_out.empty()) util::createFolderFor(s.aligned_out);
+}
+
 void evaluateTrajectory(const TrajectoryEvalSettings& s) {
+  createOutputFolders(s);
   const auto evaluation =
       eval::evaluateTrajectoryFiles(s.ground_truth, s.estimate, evaluationOptions(s));
   const bool json_on_stdout = s.json && s.json->empty();

@@ -8,6 +8,7 @@
 #include "segslam/place/cnn_place_method.h"
 #include "segslam/place/vocabulary.h"
 #include "segslam/system/loop_evaluation.h"
+#include "segslam/util/output_folder.h"
 #include "segslam/util/progress.h"
 
 namespace segslam::apps {
@@ -115,6 +116,7 @@ std::vector<std::string> cnnNotes(const std::vector<std::shared_ptr<place::CnnFe
 void run(EvalLoopsOptions& options) {
   if (options.out_dir.empty()) options.out_dir = defaultOutDir(options.dataset, "loops");
   const auto dataset = openDataset(options);
+  util::createOutputFolder(options.out_dir);
   setMaskSources(options, dataset);
   const auto backbone = place::readCnnBackboneConfig(options.backbone_config);
   const auto backbone_model = place::resolveBackboneModelFile(

@@ -6,6 +6,7 @@
 #include "dataset_arguments.h"
 #include "mask_arguments.h"
 #include "segslam/system/mask_evaluation.h"
+#include "segslam/util/output_folder.h"
 #include "segslam/util/progress.h"
 
 namespace segslam::apps {
@@ -70,6 +71,7 @@ void registerEvalMasksCommand(CLI::App& eval) {
     if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset, "masks");
     options->evaluation.masks = maskSourceOptions(options->masks);
     const auto dataset = openDataset(*options);
+    util::createOutputFolder(options->out_dir);
     util::ProgressBar progress("masks", std::min(options->evaluation.max_frames, dataset.size()));
     const auto summary = system::evaluateMasks(dataset, options->evaluation, options->out_dir,
                                                [&] { progress.advance(); });

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "dataset_arguments.h"
 #include "segslam/system/map_rebuild.h"
+#include "segslam/util/output_folder.h"
 
 namespace segslam::apps {
 
@@ -23,6 +24,7 @@ struct MapOptions : DatasetArguments {
 
 void mapCommand(MapOptions& options) {
   const auto dataset = openRunDataset(options, options.run_dir);
+  util::createOutputFolder(options.run_dir / "map");
   options.rebuild.oracle_masks = options.masks == "oracle";
   if (options.masks == "semantic") {
     options.rebuild.model_config = options.model_config;

@@ -14,6 +14,7 @@
 #include "segslam/system/loop_detector_choice.h"
 #include "segslam/system/sequence_runner.h"
 #include "segslam/util/logging.h"
+#include "segslam/util/output_folder.h"
 #include "segslam/util/progress.h"
 
 namespace segslam::apps {
@@ -76,10 +77,28 @@ void loadVocabulary(RunOptions& options) {
   if (bow_loops) options.run.slam.loop_vocabulary = vocabulary;
 }
 
+void printEvaluation(const system::SequenceRunSummary& s) {
+  if (!s.evaluation) {
+    fmt::print("  ATE        not computed: {}\n", s.evaluation_not_computed);
+    return;
+  }
+  const auto& ate = s.evaluation->ate.statistics;
+  fmt::print("  ATE        rmse {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}) over {} poses\n",
+             ate.rmse, ate.mean, ate.median, ate.max, ate.count);
+  if (const auto& rpe = s.evaluation->rpe) {
+    fmt::print("  RPE (1 s)  {:.4f} m, {:.3f} deg rmse\n", rpe->translational.rmse,
+               rpe->rotational_deg.rmse);
+  } else {
+    fmt::print("  RPE (1 s)  not computed: {}\n", s.evaluation->rpe_not_computed);
+  }
+}
+
 void printSummary(const RunOptions& options, const system::SequenceRunSummary& s) {
   fmt::print("\nsegslam run: {} (masks: {})\n", options.dataset.string(), options.masks.source);
-  fmt::print("  frames     {} tracked of {} ({} lost), {} keyframes, {} map points\n",
-             s.tracked_frames, s.frames, s.lost_frames, s.keyframes, s.map_points);
+  fmt::print(
+      "  frames     {} tracked of {} ({} lost, {} skipped for damaged images), {} keyframes, "
+      "{} map points\n",
+      s.tracked_frames, s.frames, s.lost_frames, s.skipped_frames, s.keyframes, s.map_points);
   fmt::print(
       "  tracking   median {:.1f} ms, p95 {:.1f} ms per frame (ORB extraction median {:.1f} ms)\n",
       s.tracking.median_ms, s.tracking.p95_ms, s.extraction.median_ms);
@@ -131,17 +150,7 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
                  s.loops.describe_ms_total / s.loops.keyframes_described);
     }
   }
-  if (s.evaluation) {
-    const auto& ate = s.evaluation->ate.statistics;
-    const auto& rpe = s.evaluation->rpe;
-    fmt::print(
-        "  ATE        rmse {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}) over {} poses\n",
-        ate.rmse, ate.mean, ate.median, ate.max, ate.count);
-    fmt::print("  RPE (1 s)  {:.4f} m, {:.3f} deg rmse\n", rpe.translational.rmse,
-               rpe.rotational_deg.rmse);
-  } else {
-    fmt::print("  ATE        not computed: the dataset has no groundtruth.txt\n");
-  }
+  printEvaluation(s);
   if (s.map) {
     fmt::print(
         "  map        {} static and {} dynamic points, {} objects from {} keyframes "
@@ -154,12 +163,12 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
 
 void runCommand(RunOptions& options) {
   const auto dataset = openDataset(options);
+  util::createOutputFolder(options.out_dir);  // before the networks load: fail early
   options.run.masks = maskSourceOptions(options.masks);
   chooseLoopDetector(options);
   loadVocabulary(options);
   loadLoopBackbone(options);
 
-  std::filesystem::create_directories(options.out_dir);
   util::addLogFile(options.out_dir / "run.log");
   io::writeCameraYaml(options.out_dir / "camera.yaml", dataset.camera());
   spdlog::info("dataset {}: {} frames, camera {}, masks {}", options.dataset.string(),

@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "segslam/synth/generator.h"
+#include "segslam/util/output_folder.h"
 #include "segslam/util/progress.h"
 
 namespace segslam::apps {
@@ -71,6 +72,7 @@ void logSummary(const synth::SynthSummary& summary) {
 void runSynth(const SynthArguments& args) {
   const synth::SynthOptions& o = args.options;
   synth::validateOptions(o);  // before the progress bar starts drawing
+  util::createOutputFolder(args.out);
   spdlog::info(
       "synth: {} frames {}x{}, path {} ({} laps), {} people at {} m/s, moved furniture {}, "
       "depth noise {}, seed {}",

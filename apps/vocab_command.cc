@@ -12,6 +12,7 @@
 #include "segslam/place/vocabulary.h"
 #include "segslam/place/vocabulary_trainer.h"
 #include "segslam/util/error.h"
+#include "segslam/util/output_folder.h"
 #include "segslam/util/progress.h"
 
 namespace segslam::apps {
@@ -62,6 +63,7 @@ void runTrain(const VocabTrainArguments& args) {
   if (args.image_folders.empty() && args.datasets.empty()) {
     throw util::Error("vocab train: give at least one --images or --dataset");
   }
+  util::createFolderFor(args.out);  // before the training, which takes minutes
   const auto images = place::listTrainingImages(trainingSources(args), args.every);
   spdlog::info("vocab train: {} images; k {}, depth {}, seed {}", images.size(), args.vocabulary.k,
                args.vocabulary.depth, args.vocabulary.seed);

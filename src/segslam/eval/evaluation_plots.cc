@@ -4,10 +4,9 @@
 
 #include <algorithm>
 #include <array>
-#include <system_error>
 
 #include "segslam/eval/svg_plot.h"
-#include "segslam/util/error.h"
+#include "segslam/util/output_folder.h"
 
 namespace segslam::eval {
 
@@ -118,9 +117,10 @@ Plot ateErrorPlot(const TrajectoryEvaluation& evaluation) {
   return plot;
 }
 
+// Only for an evaluation with an RPE.
 std::vector<Plot> rpeErrorPlots(const TrajectoryEvaluation& evaluation) {
   const double start = evaluation.ground_truth[0].timestamp;
-  const auto& rpe = evaluation.rpe;
+  const RpeResult& rpe = *evaluation.rpe;
   std::vector<double> times;
   std::vector<double> translational;
   std::vector<double> rotational;
@@ -155,20 +155,18 @@ std::vector<Plot> rpeErrorPlots(const TrajectoryEvaluation& evaluation) {
 
 std::vector<std::filesystem::path> writeEvaluationPlots(const std::filesystem::path& folder,
                                                         const TrajectoryEvaluation& evaluation) {
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) {
-    util::failAt(folder, fmt::format("cannot create the plot folder: {}", error.message()));
-  }
+  util::createOutputFolder(folder);
   const std::vector<Plot> top{topView(evaluation)};
   const std::vector<Plot> ate{ateErrorPlot(evaluation)};
-  const std::vector<std::filesystem::path> files{
-      folder / "trajectory_top.svg", folder / "trajectory_xyz.svg", folder / "ate_error.svg",
-      folder / "rpe_error.svg"};
+  std::vector<std::filesystem::path> files{folder / "trajectory_top.svg",
+                                           folder / "trajectory_xyz.svg", folder / "ate_error.svg"};
   writeSvg(files[0], top, {860.0, 640.0});
   writeSvg(files[1], perAxis(evaluation), {860.0, 300.0});
   writeSvg(files[2], ate);
-  writeSvg(files[3], rpeErrorPlots(evaluation), {860.0, 320.0});
+  if (evaluation.rpe) {
+    files.push_back(folder / "rpe_error.svg");
+    writeSvg(files[3], rpeErrorPlots(evaluation), {860.0, 320.0});
+  }
   return files;
 }
 

@@ -7,6 +7,7 @@
 
 #include "segslam/eval/test_trajectories.h"
 #include "segslam/testing/test_support.h"
+#include "segslam/util/error.h"
 
 namespace segslam::eval {
 namespace {
@@ -49,6 +50,31 @@ TEST(EvalPlots, TopViewShowsTheTwoWidestAxes) {
   const auto xyz = segslam::testing::fileContents(temp.path() / "trajectory_xyz.svg");
   EXPECT_NE(xyz.find(">y [m]</text>"), std::string::npos);
   EXPECT_NE(xyz.find("estimate (SE3-aligned)"), std::string::npos);
+}
+
+TEST(EvalPlots, WithoutRpeThereIsNoRpePlot) {
+  const segslam::testing::ScopedTempDir temp;
+  auto evaluation = evaluationInTheXzPlane();
+  evaluation.rpe.reset();
+  evaluation.rpe_not_computed = "too short";
+  const auto files = writeEvaluationPlots(temp.path(), evaluation);
+  EXPECT_EQ(files, (std::vector<std::filesystem::path>{temp.path() / "trajectory_top.svg",
+                                                       temp.path() / "trajectory_xyz.svg",
+                                                       temp.path() / "ate_error.svg"}));
+  EXPECT_FALSE(std::filesystem::exists(temp.path() / "rpe_error.svg"));
+}
+
+TEST(EvalPlots, AFolderThatCannotBeCreatedIsNamed) {
+  const segslam::testing::ScopedTempDir temp;
+  const auto file = temp.path() / "file.txt";
+  std::ofstream(file) << "x";
+  try {
+    writeEvaluationPlots(file / "plots", evaluationInTheXzPlane());
+    FAIL() << "expected an error";
+  } catch (const util::Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "cannot create output folder " + (file / "plots").string() + ": Not a directory");
+  }
 }
 
 }  // namespace

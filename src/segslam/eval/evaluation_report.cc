@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "segslam/util/error.h"
+#include "segslam/util/output_folder.h"
 
 namespace segslam::eval {
 
@@ -89,17 +90,21 @@ std::string formatEvaluationTable(const TrajectoryEvaluation& evaluation) {
   if (evaluation.options.ate.alignment == AlignmentMethod::kSim3) {
     table += fmt::format("{:<{}}scale {:.6f}\n", "", kLabelWidth, ate.alignment.scale);
   }
+  if (!rpe) {
+    const std::string label = fmt::format("RPE ({})", rpePairingTitle(evaluation.options.rpe));
+    return table +
+           fmt::format("{:<{}}not computed: {}\n", label, kLabelWidth, evaluation.rpe_not_computed);
+  }
   const std::string rpe_title =
-      fmt::format("{}, {} pairs", rpePairingTitle(evaluation.options.rpe), rpe.pairs.size());
-  table += statisticsLine(fmt::format("RPE trans ({})", rpe_title), rpe.translational, "m");
-  table += statisticsLine(fmt::format("RPE rot   ({})", rpe_title), rpe.rotational_deg, "deg");
+      fmt::format("{}, {} pairs", rpePairingTitle(evaluation.options.rpe), rpe->pairs.size());
+  table += statisticsLine(fmt::format("RPE trans ({})", rpe_title), rpe->translational, "m");
+  table += statisticsLine(fmt::format("RPE rot   ({})", rpe_title), rpe->rotational_deg, "deg");
   return table;
 }
 
 nlohmann::json evaluationJson(const TrajectoryEvaluation& evaluation) {
   const auto& ate = evaluation.ate;
-  const auto& rpe = evaluation.rpe;
-  return {
+  nlohmann::json json = {
       {"ground_truth",
        {{"file", evaluation.ground_truth_file.string()},
         {"poses", evaluation.ground_truth.size()}}},
@@ -112,17 +117,22 @@ nlohmann::json evaluationJson(const TrajectoryEvaluation& evaluation) {
         {"transform", matrixJson(ate.alignment.matrix())},
         {"scale", ate.alignment.scale},
         {"translational", statisticsJson(ate.statistics, "m")}}},
-      {"rpe",
-       {{"pairs", rpe.pairs.size()},
-        {"translational", statisticsJson(rpe.translational, "m")},
-        {"rotational", statisticsJson(rpe.rotational_deg, "deg")}}},
   };
+  if (const auto& rpe = evaluation.rpe) {
+    json["rpe"] = {{"pairs", rpe->pairs.size()},
+                   {"translational", statisticsJson(rpe->translational, "m")},
+                   {"rotational", statisticsJson(rpe->rotational_deg, "deg")}};
+  } else {
+    json["rpe"] = nullptr;
+    json["rpe_not_computed"] = evaluation.rpe_not_computed;
+  }
+  return json;
 }
 
 void writeEvaluationJson(const std::filesystem::path& file,
                          const TrajectoryEvaluation& evaluation) {
+  util::createFolderFor(file);
   try {
-    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
     auto out = fmt::output_file(file.string());
     out.print("{}\n", evaluationJson(evaluation).dump(2));
   } catch (const std::system_error& e) {

@@ -1,5 +1,6 @@
 #include "segslam/eval/evaluation_report.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -56,11 +57,29 @@ TEST(EvalReport, JsonHoldsOptionsCountsStatisticsAndAlignment) {
   EXPECT_EQ(json["ate"]["transform"].size(), 4u);
   EXPECT_DOUBLE_EQ(json["ate"]["transform"][3][3].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(json["ate"]["scale"].get<double>(), 1.0);
-  EXPECT_EQ(json["rpe"]["pairs"], evaluation.rpe.pairs.size());
+  EXPECT_EQ(json["rpe"]["pairs"], evaluation.rpe->pairs.size());
+  EXPECT_FALSE(json.contains("rpe_not_computed"));
   EXPECT_EQ(json["rpe"]["rotational"]["unit"], "deg");
   for (const auto* key : {"count", "rmse", "mean", "median", "std", "min", "max"}) {
     EXPECT_TRUE(json["rpe"]["translational"].contains(key)) << key;
   }
+}
+
+TEST(EvalReport, AnRpeThatCannotBeComputedSaysWhy) {
+  auto evaluation = smallEvaluation(AlignmentMethod::kSe3);
+  evaluation.rpe.reset();
+  evaluation.rpe_not_computed = "the estimate spans 0.6 s";
+  const auto table = formatEvaluationTable(evaluation);
+  EXPECT_NE(table.find("ATE (SE3, 50 pairs)"), std::string::npos) << table;
+  EXPECT_NE(table.find(
+                fmt::format("\n{:<36}not computed: the estimate spans 0.6 s\n", "RPE (delta 1 s)")),
+            std::string::npos)
+      << table;
+  EXPECT_EQ(table.find("RPE trans"), std::string::npos) << table;
+  const auto json = evaluationJson(evaluation);
+  EXPECT_TRUE(json["rpe"].is_null());
+  EXPECT_EQ(json["rpe_not_computed"], "the estimate spans 0.6 s");
+  EXPECT_EQ(json["ate"]["pairs"], 50);
 }
 
 TEST(EvalReport, WritesJsonFiles) {

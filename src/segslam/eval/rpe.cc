@@ -34,7 +34,17 @@ std::vector<PosePair> candidatePairs(const core::Trajectory& estimate, const Rpe
                                      std::mt19937_64& rng) {
   if (!options.fixed_delta) return allOrRandomPairs(estimate.size(), options.max_pairs, rng);
   const auto index = deltaIndex(estimate, options.delta_unit);
-  return limitPairs(fixedDeltaPairs(index, options.delta), options.max_pairs, rng);
+  auto pairs = limitPairs(fixedDeltaPairs(index, options.delta), options.max_pairs, rng);
+  // A short estimate (a run of a few frames) has no pairs a whole delta apart: say so, rather than
+  // blame the ground truth below.
+  if (pairs.size() < 2) {
+    throw util::Error(fmt::format(
+        "the estimate spans {:.3f} s ({} poses) and has {} pose pair(s) {:g} {} apart (pairs "
+        "ending at its last pose do not count, as in the TUM tool); need at least 2",
+        estimate[estimate.size() - 1].timestamp - estimate[0].timestamp, estimate.size(),
+        pairs.size(), options.delta, deltaUnitName(options.delta_unit)));
+  }
+  return pairs;
 }
 
 double medianInterval(const std::vector<double>& stamps) {

@@ -115,5 +115,20 @@ TEST(Rpe, TooFewPairsIsAnError) {
   EXPECT_THROW(evaluateRpe(kGroundTruth, two, {.delta_unit = DeltaUnit::kFrames}), util::Error);
 }
 
+TEST(Rpe, AnEstimateShorterThanTheDeltaSaysSo) {
+  // 0.5 s of poses against 2 s of ground truth: no pair is 1 s apart.
+  const auto gt = alongX(fixtures::stampsFrom(0.0, 0.1, 20), std::vector<double>(20, 0.0));
+  const auto short_estimate =
+      alongX(fixtures::stampsFrom(0.0, 0.1, 6), std::vector<double>(6, 0.0));
+  try {
+    evaluateRpe(gt, short_estimate);
+    FAIL() << "expected an error";
+  } catch (const util::Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "the estimate spans 0.500 s (6 poses) and has 0 pose pair(s) 1 s apart (pairs "
+                 "ending at its last pose do not count, as in the TUM tool); need at least 2");
+  }
+}
+
 }  // namespace
 }  // namespace segslam::eval

@@ -37,10 +37,19 @@ TrajectoryEvaluation evaluateTrajectoryFiles(const std::filesystem::path& ground
   evaluation.ate = reportingFiles(evaluation, "ATE", [&] {
     return evaluateAte(evaluation.ground_truth, evaluation.estimate, options.ate);
   });
-  evaluation.rpe = reportingFiles(evaluation, "RPE", [&] {
-    return evaluateRpe(evaluation.ground_truth, evaluation.estimate, options.rpe);
-  });
+  addRpe(evaluation);
   return evaluation;
+}
+
+void addRpe(TrajectoryEvaluation& evaluation) {
+  try {
+    evaluation.rpe =
+        evaluateRpe(evaluation.ground_truth, evaluation.estimate, evaluation.options.rpe);
+    evaluation.rpe_not_computed.clear();
+  } catch (const util::Error& e) {
+    evaluation.rpe.reset();
+    evaluation.rpe_not_computed = e.what();
+  }
 }
 
 }  // namespace segslam::eval

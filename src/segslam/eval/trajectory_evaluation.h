@@ -1,6 +1,8 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "segslam/core/trajectory.h"
 #include "segslam/eval/ate.h"
@@ -13,7 +15,9 @@ struct TrajectoryEvaluationOptions {
   RpeOptions rpe;
 };
 
-// Both metrics for one estimate against its ground truth, with the inputs they came from.
+// Both metrics for one estimate against its ground truth, with the inputs they came from. The ATE
+// is always there; the RPE can be impossible where the ATE is not (an estimate shorter than the
+// RPE's delta of 1 s has no pose pairs to compare).
 struct TrajectoryEvaluation {
   std::filesystem::path ground_truth_file;
   std::filesystem::path estimate_file;
@@ -21,11 +25,15 @@ struct TrajectoryEvaluation {
   core::Trajectory ground_truth;
   core::Trajectory estimate;
   AteResult ate;
-  RpeResult rpe;
+  std::optional<RpeResult> rpe;
+  std::string rpe_not_computed;  // why, when there is no RPE
 };
 
-// Reads two TUM trajectory files and computes ATE and RPE. Every util::Error (unreadable file,
-// too little overlap) names the file it is about.
+// The RPE of the evaluation, or the reason why it cannot be computed in rpe_not_computed.
+void addRpe(TrajectoryEvaluation& evaluation);
+
+// Reads two TUM trajectory files and computes ATE and RPE, the RPE only where it can be computed.
+// Every util::Error (unreadable file, too little overlap for the ATE) names the file it is about.
 TrajectoryEvaluation evaluateTrajectoryFiles(const std::filesystem::path& ground_truth_file,
                                              const std::filesystem::path& estimate_file,
                                              const TrajectoryEvaluationOptions& options = {});

@@ -165,6 +165,29 @@ core::Camera parseCameraYaml(std::string_view text, const std::filesystem::path&
   return camera;
 }
 
+core::Camera readCalibrationTxt(const std::filesystem::path& file, cv::Size image_size) {
+  constexpr std::string_view kFormat = "fx fy cx cy";
+  const auto rows = util::readTextRows(file);
+  if (rows.size() != 1) {
+    util::failAt(file,
+                 fmt::format("expected one line '{}' but found {} line(s)", kFormat, rows.size()));
+  }
+  const util::TextRow& row = rows.front();
+  util::requireFieldCount(row, 4, file, kFormat);
+  core::Camera camera;
+  camera.name = "calibration.txt";
+  camera.width = image_size.width;
+  camera.height = image_size.height;
+  camera.fx = util::parseDouble(row.fields[0], file, row.line, "fx");
+  camera.fy = util::parseDouble(row.fields[1], file, row.line, "fy");
+  camera.cx = util::parseDouble(row.fields[2], file, row.line, "cx");
+  camera.cy = util::parseDouble(row.fields[3], file, row.line, "cy");
+  camera.depth_factor = 5000.0;
+  camera.fps = 30.0;
+  validateCamera(camera, file);
+  return camera;
+}
+
 void writeCameraYaml(const std::filesystem::path& file, const core::Camera& camera) {
   YAML::Emitter out;
   out << YAML::BeginMap << YAML::Key << "camera" << YAML::Value << YAML::BeginMap;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <string_view>
@@ -13,17 +15,51 @@ namespace segslam::io {
 
 namespace {
 
+constexpr std::string_view kJpegStart = "\xFF\xD8\xFF";
+constexpr std::string_view kJpegEnd = "\xFF\xD9";
+constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1A\n";
+// The IEND chunk in full: zero length, type, CRC.
+constexpr std::string_view kPngEnd{"\0\0\0\0IEND\xAE\x42\x60\x82", 12};
+// Enough of the file's end to see past any padding written after the end marker.
+constexpr std::streamoff kTailBytes = 4096;
+
+struct HeadAndTail {
+  std::string head;
+  std::string tail;  // trailing zero and whitespace padding removed
+};
+
+HeadAndTail headAndTail(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : 0;
+  HeadAndTail bytes{std::string(static_cast<std::size_t>(std::min<std::streamoff>(size, 8)), '\0'),
+                    std::string(static_cast<std::size_t>(std::min(size, kTailBytes)), '\0')};
+  in.seekg(0);
+  in.read(bytes.head.data(), static_cast<std::streamsize>(bytes.head.size()));
+  in.seekg(size - static_cast<std::streamoff>(bytes.tail.size()));
+  in.read(bytes.tail.data(), static_cast<std::streamsize>(bytes.tail.size()));
+  const std::size_t end = bytes.tail.find_last_not_of(std::string_view("\0 \t\r\n", 5));
+  bytes.tail.resize(end == std::string::npos ? 0 : end + 1);
+  return bytes;
+}
+
 // Decodes the file as stored (no conversion), so that its bit depth and channels can be checked.
 cv::Mat decodeImage(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) util::failAt(file, "image file not found");
+  if (const auto truncation = imageTruncation(file)) {
+    throw DamagedImageError(fmt::format("{}: damaged image: {}", file.string(), *truncation));
+  }
   cv::Mat image;
   try {
     image = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception& e) {
-    util::failAt(file, fmt::format("cannot decode the image: {}", e.what()));
+    throw DamagedImageError(
+        fmt::format("{}: cannot decode the image: {}", file.string(), e.what()));
   }
-  if (image.empty()) util::failAt(file, "cannot decode the image (unreadable or corrupt file)");
+  if (image.empty()) {
+    throw DamagedImageError(
+        fmt::format("{}: cannot decode the image (unreadable or corrupt file)", file.string()));
+  }
   return image;
 }
 
@@ -73,6 +109,17 @@ cv::Mat readSingleChannel(const std::filesystem::path& file, int type, cv::Size 
 
 }  // namespace
 
+std::optional<std::string> imageTruncation(const std::filesystem::path& file) {
+  const HeadAndTail bytes = headAndTail(file);
+  if (bytes.head.starts_with(kJpegStart) && !bytes.tail.ends_with(kJpegEnd)) {
+    return "the JPEG data stops before its end marker (FF D9): the file is truncated";
+  }
+  if (bytes.head.starts_with(kPngSignature) && !bytes.tail.ends_with(kPngEnd)) {
+    return "the PNG data stops before its IEND chunk: the file is truncated";
+  }
+  return std::nullopt;
+}
+
 cv::Mat readColourImage(const std::filesystem::path& file, const core::Camera& camera) {
   cv::Mat bgr = toBgr(decodeImage(file), file);
   requireSize(bgr, {camera.width, camera.height}, file, "colour image",
@@ -87,6 +134,8 @@ cv::Mat readDepthImage(const std::filesystem::path& file, const core::Camera& ca
   raw.convertTo(metres, CV_32F, 1.0 / camera.depth_factor);
   return metres;
 }
+
+cv::Size readImageSize(const std::filesystem::path& file) { return decodeImage(file).size(); }
 
 cv::Mat readMaskImage(const std::filesystem::path& file, cv::Size colour_size) {
   const cv::Mat raw = readSingleChannel(file, CV_8UC1, colour_size, "mask");

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "segslam/io/io_test_support.h"
 #include "segslam/testing/test_support.h"
 
@@ -75,8 +77,46 @@ TEST_F(TumDatasetFrameImages, MissingOrCorruptFilesAreRejected) {
             missing.string() + ": image file not found");
   const fs::path corrupt = temp_.path() / "corrupt.png";
   writeText(corrupt, "\x89PNG\r\n\x1a\n truncated");
-  EXPECT_TRUE(contains(errorMessage([&] { (void)readDepthImage(corrupt, imageCamera(), kSize); }),
-                       corrupt.string() + ": cannot decode the image"));
+  EXPECT_EQ(errorMessage([&] { (void)readDepthImage(corrupt, imageCamera(), kSize); }),
+            corrupt.string() +
+                ": damaged image: the PNG data stops before its IEND chunk: the file is truncated");
+  const fs::path garbage = temp_.path() / "garbage.png";
+  writeText(garbage, "not an image at all");
+  EXPECT_EQ(errorMessage([&] { (void)readDepthImage(garbage, imageCamera(), kSize); }),
+            garbage.string() + ": cannot decode the image (unreadable or corrupt file)");
+  EXPECT_THROW((void)readDepthImage(garbage, imageCamera(), kSize), DamagedImageError);
+}
+
+// libjpeg decodes a truncated JPEG half grey and only prints "Premature end of JPEG file".
+TEST_F(TumDatasetFrameImages, TruncatedJpegIsDamaged) {
+  const fs::path jpeg = write("c.jpg", cv::Mat(kSize, CV_8UC3, cv::Scalar(1, 2, 3)));
+  EXPECT_FALSE(imageTruncation(jpeg));
+  fs::resize_file(jpeg, fs::file_size(jpeg) - 10);
+  EXPECT_EQ(imageTruncation(jpeg),
+            "the JPEG data stops before its end marker (FF D9): the file is truncated");
+  try {
+    (void)readColourImage(jpeg, imageCamera());
+    FAIL() << "expected a DamagedImageError";
+  } catch (const DamagedImageError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              jpeg.string() +
+                  ": damaged image: the JPEG data stops before its end marker (FF D9): the file "
+                  "is truncated");
+  }
+}
+
+TEST_F(TumDatasetFrameImages, PaddingAfterTheEndMarkerIsNoDamage) {
+  const fs::path jpeg = write("c.jpg", cv::Mat(kSize, CV_8UC3, cv::Scalar(1, 2, 3)));
+  const fs::path png = write("d.png", cv::Mat(kSize, CV_16UC1, cv::Scalar(1000)));
+  for (const fs::path& file : {jpeg, png}) {
+    std::ofstream(file, std::ios::binary | std::ios::app) << std::string("\0\0\0\n \r\n", 7);
+    EXPECT_FALSE(imageTruncation(file)) << file;
+  }
+  EXPECT_EQ(readColourImage(jpeg, imageCamera()).size(), kSize);
+  EXPECT_FLOAT_EQ(readDepthImage(png, imageCamera(), kSize).at<float>(0, 0), 1.0f);
+  fs::resize_file(png, fs::file_size(png) - 12);  // the padding and 5 bytes of the IEND chunk
+  EXPECT_EQ(imageTruncation(png),
+            "the PNG data stops before its IEND chunk: the file is truncated");
 }
 
 TEST_F(TumDatasetFrameImages, DepthIsConvertedToMetresAndZeroStaysZero) {

@@ -1,6 +1,7 @@
 #include "segslam/io/image_list.h"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <utility>
@@ -21,19 +22,35 @@ ImageListEntry entryFromFields(const util::TextRow& row, std::size_t first_field
           row.fields[first_field + 1]};
 }
 
+// The entries `timestamp_of` keys by time, as the TUM tools' read_file_list does.
+template <typename Entry, typename TimestampOf>
+std::vector<Entry> keyedByTimestamp(std::vector<Entry> entries, TimestampOf timestamp_of,
+                                    const std::filesystem::path& file) {
+  std::vector<double> stamps;
+  std::vector<int> lines;
+  for (const auto& entry : entries) {
+    stamps.push_back(timestamp_of(entry).timestamp);
+    lines.push_back(timestamp_of(entry).line);
+  }
+  const util::TimestampKeyedRows keyed = util::keyRowsByTimestamp(stamps, lines, file);
+  if (!keyed.warning.empty()) spdlog::warn("{}", keyed.warning);
+  std::vector<Entry> kept;
+  kept.reserve(keyed.rows.size());
+  for (const std::size_t row : keyed.rows) kept.push_back(std::move(entries[row]));
+  return kept;
+}
+
 std::vector<ImageListEntry> imageListFromRows(const std::vector<util::TextRow>& rows,
                                               const std::filesystem::path& file) {
   std::vector<ImageListEntry> entries;
   entries.reserve(rows.size());
   for (const auto& row : rows) {
     util::requireFieldCount(row, 2, file, kImageListFormat);
-    auto entry = entryFromFields(row, 0, file);
-    if (!entries.empty()) {
-      util::requireIncreasingTimestamp(entries.back().timestamp, entry.timestamp, file, row.line);
-    }
-    entries.push_back(std::move(entry));
+    entries.push_back(entryFromFields(row, 0, file));
   }
-  return entries;
+  return keyedByTimestamp(
+      std::move(entries),
+      [](const ImageListEntry& entry) -> const ImageListEntry& { return entry; }, file);
 }
 
 void requireUniqueDepthTimestamps(const std::vector<AssociationEntry>& entries,
@@ -58,13 +75,11 @@ std::vector<AssociationEntry> associationListFromRows(const std::vector<util::Te
   entries.reserve(rows.size());
   for (const auto& row : rows) {
     util::requireFieldCount(row, 4, file, kAssociationFormat);
-    AssociationEntry entry{entryFromFields(row, 0, file), entryFromFields(row, 2, file)};
-    if (!entries.empty()) {
-      util::requireIncreasingTimestamp(entries.back().rgb.timestamp, entry.rgb.timestamp, file,
-                                       row.line);
-    }
-    entries.push_back(std::move(entry));
+    entries.push_back({entryFromFields(row, 0, file), entryFromFields(row, 2, file)});
   }
+  entries = keyedByTimestamp(
+      std::move(entries),
+      [](const AssociationEntry& entry) -> const ImageListEntry& { return entry.rgb; }, file);
   requireUniqueDepthTimestamps(entries, file);
   return entries;
 }

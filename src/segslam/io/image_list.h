@@ -15,8 +15,10 @@ struct ImageListEntry {
 };
 
 // Reads an image list. Throws util::Error naming the file and line for a line without exactly
-// two fields, a timestamp that is not a finite number, and timestamps that are duplicated or out
-// of order. An empty list is returned as such: the caller knows whether that is an error.
+// two fields or a timestamp that is not a finite number. Duplicated timestamps and lines out of
+// order are read as the TUM tools' associate.py reads them (the later line of a timestamp wins,
+// the entries are sorted by time; see util::keyRowsByTimestamp), with one warning naming the
+// file. An empty list is returned as such: the caller knows whether that is an error.
 std::vector<ImageListEntry> readImageList(const std::filesystem::path& file);
 
 // The same for the text of such a file; `name` is the file named in error messages.
@@ -30,8 +32,9 @@ struct AssociationEntry {
   ImageListEntry depth;
 };
 
-// Reads associations.txt: the colour timestamps must increase strictly (they order the frames)
-// and no depth timestamp may appear twice. The depth timestamps need not increase: the TUM greedy
+// Reads associations.txt: its colour timestamps order the frames and are keyed like an image
+// list's (the later line of a duplicated one wins, the lines are sorted, with a warning); then no
+// depth timestamp may appear twice. The depth timestamps need not increase: the TUM greedy
 // association can pair two close colour images with their depth images crosswise.
 std::vector<AssociationEntry> readAssociationList(const std::filesystem::path& file);
 

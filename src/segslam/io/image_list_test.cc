@@ -41,10 +41,20 @@ TEST(TumDatasetImageList, MalformedLinesNameFileAndLine) {
   EXPECT_EQ(listError("nan a.png\n"), "d/rgb.txt:1: timestamp is not a finite number: 'nan'");
 }
 
-TEST(TumDatasetImageList, TimestampsMustIncrease) {
-  EXPECT_EQ(listError("1.0 a.png\n1.0 b.png\n"), "d/rgb.txt:2: duplicated timestamp 1");
-  EXPECT_EQ(listError("1.5 a.png\n\n1.25 b.png\n"),
-            "d/rgb.txt:3: timestamp 1.25 is out of order (previous 1.5)");
+// associate.py reads lists with read_file_list: a dict keyed by timestamp, sorted later.
+TEST(TumDatasetImageList, DuplicatedAndUnorderedTimestampsAreReadLikeTheTumTools) {
+  testing::CapturedLog log;
+  const auto entries =
+      parseImageList("2.0 c.png\n1.0 a.png\n1.0 b.png\n\n1.5 d.png\n", "d/rgb.txt");
+  ASSERT_EQ(entries.size(), 3u);
+  EXPECT_EQ(entries[0].path, "b.png");
+  EXPECT_EQ(entries[0].line, 3);
+  EXPECT_EQ(entries[1].path, "d.png");
+  EXPECT_EQ(entries[2].path, "c.png");
+  EXPECT_EQ(log.text(),
+            "[warning] d/rgb.txt:3: 1 duplicated timestamp (first 1): the later line of each is "
+            "used; d/rgb.txt:2: 1 timestamp out of order (first 1 after 2): the lines are sorted "
+            "by time, as the TUM benchmark tools do\n");
 }
 
 TEST(TumDatasetImageList, ReadsFilesAndNamesMissingOnes) {
@@ -73,14 +83,27 @@ TEST(TumDatasetImageList, DepthOfAssociationsMayCrossButNotRepeat) {
             "d/associations.txt:3: depth timestamp 1.1 is already used on line 1");
 }
 
+TEST(TumDatasetImageList, AssociationsAreKeyedByTheirColourTimestamps) {
+  testing::CapturedLog log;
+  // The repeated line's depth timestamp is not used twice: only the later line of 1.0 is kept.
+  const auto entries =
+      parseAssociationList("2.0 c 2.0 z\n1.0 a 1.0 x\n1.0 b 1.0 x\n", "d/associations.txt");
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_EQ(entries[0].rgb.path, "b");
+  EXPECT_EQ(entries[1].rgb.path, "c");
+  EXPECT_EQ(entries[1].depth.path, "z");
+  EXPECT_EQ(log.text(),
+            "[warning] d/associations.txt:3: 1 duplicated timestamp (first 1): the later line of "
+            "each is used; d/associations.txt:2: 1 timestamp out of order (first 1 after 2): the "
+            "lines are sorted by time, as the TUM benchmark tools do\n");
+}
+
 TEST(TumDatasetImageList, MalformedAssociationsNameFileAndLine) {
   EXPECT_EQ(associationError("1.0 a.png 1.0\n"),
             "d/associations.txt:1: expected 'rgb_timestamp rgb_file depth_timestamp depth_file' "
             "but found 3 field(s)");
   EXPECT_EQ(associationError("1.0 a.png x d.png\n"),
             "d/associations.txt:1: timestamp is not a finite number: 'x'");
-  EXPECT_EQ(associationError("2.0 a 2.0 x\n1.0 b 1.0 y\n"),
-            "d/associations.txt:2: timestamp 1 is out of order (previous 2)");
 }
 
 }  // namespace

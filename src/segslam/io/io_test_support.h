@@ -4,12 +4,17 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,6 +43,24 @@ inline ::testing::AssertionResult contains(const std::string& text, std::string_
   return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
 }
 
+// Collects what spdlog's default logger logs while it lives, as "[level] message" lines.
+class CapturedLog {
+ public:
+  CapturedLog() : sink_(std::make_shared<spdlog::sinks::ostream_sink_mt>(stream_)) {
+    sink_->set_pattern("[%l] %v");
+    spdlog::default_logger()->sinks().push_back(sink_);
+  }
+  ~CapturedLog() { std::erase(spdlog::default_logger()->sinks(), sink_); }
+  CapturedLog(const CapturedLog&) = delete;
+  CapturedLog& operator=(const CapturedLog&) = delete;
+
+  [[nodiscard]] std::string text() const { return stream_.str(); }
+
+ private:
+  std::ostringstream stream_;
+  std::shared_ptr<spdlog::sinks::ostream_sink_mt> sink_;
+};
+
 inline void writeText(const std::filesystem::path& file, std::string_view text) {
   std::filesystem::create_directories(file.parent_path());
   std::ofstream out(file, std::ios::binary);
@@ -48,6 +71,24 @@ inline void writeText(const std::filesystem::path& file, std::string_view text) 
 inline void writeImage(const std::filesystem::path& file, const cv::Mat& image) {
   std::filesystem::create_directories(file.parent_path());
   ASSERT_TRUE(cv::imwrite(file.string(), image)) << file;
+}
+
+// Replaces the colour image `rgb_path` of the dataset in `folder` by a JPEG of it written with
+// cv::imwrite and cut short, as an interrupted copy leaves one (libjpeg decodes it half grey,
+// saying only "Premature end of JPEG file"); rgb.txt then names the JPEG. Returns its path.
+inline std::filesystem::path replaceByTruncatedJpeg(const std::filesystem::path& folder,
+                                                    const std::filesystem::path& rgb_path) {
+  const std::filesystem::path listed = rgb_path.lexically_relative(folder);
+  std::filesystem::path jpeg = rgb_path;
+  jpeg.replace_extension(".jpg");
+  EXPECT_TRUE(cv::imwrite(jpeg.string(), cv::imread(rgb_path.string())));
+  std::filesystem::resize_file(jpeg, std::filesystem::file_size(jpeg) / 2);
+  std::ifstream in(folder / "rgb.txt");
+  std::string list((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string listed_jpeg = std::filesystem::path(listed).replace_extension(".jpg").string();
+  list.replace(list.find(listed.string()), listed.string().size(), listed_jpeg);
+  writeText(folder / "rgb.txt", list);
+  return jpeg;
 }
 
 // A small valid TUM dataset in `folder`: colour frames at 30 Hz, depth stamps jittered by up to

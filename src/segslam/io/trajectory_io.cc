@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 #include <fmt/os.h>
+#include <spdlog/spdlog.h>
 
 #include <cmath>
 
 #include "segslam/util/error.h"
+#include "segslam/util/output_folder.h"
 #include "segslam/util/text_file.h"
 
 namespace segslam::io {
@@ -31,15 +33,20 @@ core::Trajectory trajectoryFromRows(const std::vector<util::TextRow>& rows,
                                     const std::filesystem::path& file) {
   if (rows.empty()) util::failAt(file, "trajectory file has no poses");
   std::vector<core::StampedPose> poses;
+  std::vector<double> stamps;
+  std::vector<int> lines;
   poses.reserve(rows.size());
   for (const auto& row : rows) {
-    auto pose = parsePoseRow(row, file);
-    if (!poses.empty()) {
-      util::requireIncreasingTimestamp(poses.back().timestamp, pose.timestamp, file, row.line);
-    }
-    poses.push_back(pose);
+    poses.push_back(parsePoseRow(row, file));
+    stamps.push_back(poses.back().timestamp);
+    lines.push_back(row.line);
   }
-  return core::Trajectory(std::move(poses));
+  const util::TimestampKeyedRows keyed = util::keyRowsByTimestamp(stamps, lines, file);
+  if (!keyed.warning.empty()) spdlog::warn("{}", keyed.warning);
+  std::vector<core::StampedPose> kept;
+  kept.reserve(keyed.rows.size());
+  for (const std::size_t row : keyed.rows) kept.push_back(poses[row]);
+  return core::Trajectory(std::move(kept));
 }
 
 }  // namespace
@@ -54,7 +61,7 @@ core::Trajectory parseTumTrajectory(std::string_view text, const std::filesystem
 
 void writeTumTrajectory(const std::filesystem::path& file, const core::Trajectory& trajectory,
                         const std::string& header_comment) {
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  util::createFolderFor(file);
   try {
     auto out = fmt::output_file(file.string());
     if (!header_comment.empty()) out.print("# {}\n", header_comment);

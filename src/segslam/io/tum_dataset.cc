@@ -27,6 +27,9 @@ struct FrameImageList {
   std::optional<fs::path> FrameRecord::*path;
 };
 
+// associate.py's output as the TUM tools' users name it, and as the ETH3D SLAM benchmark ships it.
+constexpr std::string_view kAssociationFiles[] = {"associations.txt", "associated.txt"};
+
 constexpr FrameImageList kFrameImageLists[] = {
     {"mask.txt", "mask", &FrameRecord::mask_path},
     {"labels.txt", "label image", &FrameRecord::labels_path},
@@ -136,8 +139,9 @@ std::vector<FrameRecord> framesFromColourAndDepthLists(const fs::path& folder,
 }
 
 std::vector<FrameRecord> readFrames(const fs::path& folder, double max_difference) {
-  const fs::path associations = folder / "associations.txt";
-  if (pathExists(associations)) return framesFromAssociationList(associations);
+  for (const std::string_view name : kAssociationFiles) {
+    if (pathExists(folder / name)) return framesFromAssociationList(folder / name);
+  }
   return framesFromColourAndDepthLists(folder, max_difference);
 }
 
@@ -169,7 +173,8 @@ struct CameraChoice {
   std::string source;
 };
 
-CameraChoice chooseCamera(const fs::path& folder, const DatasetOptions& options) {
+CameraChoice chooseCamera(const fs::path& folder, const DatasetOptions& options,
+                          const std::vector<FrameRecord>& frames) {
   if (options.camera_file) {
     return {readCameraYaml(*options.camera_file), "file " + options.camera_file->string()};
   }
@@ -179,6 +184,11 @@ CameraChoice chooseCamera(const fs::path& folder, const DatasetOptions& options)
   const fs::path in_folder = folder / "camera.yaml";
   if (pathExists(in_folder)) {
     return {readCameraYaml(in_folder), "file " + in_folder.string() + " (in the dataset folder)"};
+  }
+  const fs::path calibration = folder / "calibration.txt";
+  if (pathExists(calibration)) {
+    return {readCalibrationTxt(calibration, readImageSize(frames.front().rgb_path)),
+            "file " + calibration.string() + " (ETH3D calibration in the dataset folder)"};
   }
   if (const auto preset = presetNameForDataset(folder)) {
     return {requireCameraPreset(*preset), "preset " + *preset + " (from folder name)"};
@@ -200,7 +210,7 @@ TumDataset TumDataset::open(const fs::path& folder, const DatasetOptions& option
     attachFrameImages(list, folder, options.max_time_difference, dataset.frames_);
   }
   dataset.ground_truth_ = readGroundTruth(folder);
-  auto [camera, source] = chooseCamera(folder, options);
+  auto [camera, source] = chooseCamera(folder, options, dataset.frames_);
   dataset.camera_ = std::move(camera);
   dataset.camera_source_ = std::move(source);
   return dataset;

@@ -17,7 +17,8 @@ struct DatasetOptions {
   // used to find each frame's mask, label and instance images. Must be positive.
   double max_time_difference = 0.02;
   // Camera settings, in order of precedence: an explicit YAML file, an explicit preset name,
-  // `camera.yaml` inside the dataset folder, the TUM preset named by the folder ("fr1", ...).
+  // `camera.yaml` inside the dataset folder, an ETH3D `calibration.txt` inside it, the TUM preset
+  // named by the folder ("fr1", ...).
   std::optional<std::filesystem::path> camera_file;
   std::optional<std::string> camera_preset;
 };
@@ -51,16 +52,21 @@ struct FrameLayers {
   bool instances = true;
 };
 
-// A sequence in the TUM RGB-D layout:
+// A sequence in the TUM RGB-D layout (also that of the Bonn RGB-D Dynamic dataset and, with
+// associated.txt and calibration.txt, of the ETH3D SLAM benchmark):
 // - rgb.txt and depth.txt (`timestamp path` per line), associated by nearest timestamp exactly
-//   as the TUM tools do; or associations.txt (associate.py output,
+//   as the TUM tools do; or associations.txt or else associated.txt (associate.py output,
 //   `t_rgb rgb_path t_depth depth_path`), which then alone defines the frames;
 // - optional groundtruth.txt (TUM trajectory);
 // - optional mask.txt, labels.txt, instances.txt (`timestamp path`), matched to the frames by
 //   timestamp the same way; when such a list exists, every frame must have an entry in it;
 // - optional camera.yaml (see DatasetOptions for the camera precedence).
+// - optional calibration.txt (ETH3D: `fx fy cx cy`), the camera when no camera.yaml is there.
+// Lists are read as the TUM tools read them (util::keyRowsByTimestamp): a duplicated timestamp's
+// later line wins and lines out of order are sorted, with a warning naming the list.
 // Opening parses and validates every list file and checks that every listed file exists, without
-// decoding any image; any problem throws util::Error naming the file and line.
+// decoding any image (but the first colour image when calibration.txt gives the camera, for its
+// size); any problem throws util::Error naming the file and line.
 class TumDataset {
  public:
   static TumDataset open(const std::filesystem::path& folder, const DatasetOptions& options = {});
@@ -74,8 +80,9 @@ class TumDataset {
   [[nodiscard]] const std::optional<core::Trajectory>& groundTruth() const { return ground_truth_; }
   [[nodiscard]] bool hasMasks() const;
 
-  // Loads and validates the images of frame i: unreadable files, wrong image types and sizes
-  // throw util::Error naming the image file. i >= size() throws std::out_of_range. Of the
+  // Loads and validates the images of frame i: wrong image types and sizes throw util::Error
+  // naming the image file, and damaged images (cut short, undecodable) DamagedImageError naming
+  // it, so that a player can skip the frame. i >= size() throws std::out_of_range. Of the
   // optional images, only those `layers` asks for are loaded.
   [[nodiscard]] RgbdFrame loadFrame(std::size_t i, FrameLayers layers = {}) const;
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <opencv2/imgproc.hpp>
 
+#include "segslam/io/frame_images.h"
 #include "segslam/io/io_test_support.h"
 #include "segslam/io/timestamp_association.h"
 #include "segslam/testing/test_support.h"
@@ -115,6 +116,51 @@ TEST_F(TumDatasetTest, AssociationsFileDefinesTheFramesInsteadOfTheLists) {
   EXPECT_TRUE(dataset.hasMasks());
 }
 
+// The ETH3D SLAM benchmark names associate.py's output associated.txt.
+TEST_F(TumDatasetTest, AssociatedTxtIsReadAsTheAssociations) {
+  writeText(folder_ / "associated.txt",
+            fmt::format("{0:.6f} rgb/{0:.6f}.png {1:.6f} depth/{1:.6f}.png\n", tiny_.rgb_stamps[1],
+                        tiny_.depth_stamps[1]));
+  const auto dataset = TumDataset::open(folder_);
+  ASSERT_EQ(dataset.size(), 1u);
+  EXPECT_DOUBLE_EQ(dataset.frames()[0].timestamp, tiny_.rgb_stamps[1]);
+
+  // associations.txt, the TUM tools' name, comes first.
+  writeText(folder_ / "associations.txt",
+            fmt::format("{0:.6f} rgb/{0:.6f}.png {1:.6f} depth/{1:.6f}.png\n", tiny_.rgb_stamps[2],
+                        tiny_.depth_stamps[2]));
+  EXPECT_DOUBLE_EQ(TumDataset::open(folder_).frames()[0].timestamp, tiny_.rgb_stamps[2]);
+}
+
+// ETH3D SLAM benchmark sequences give the camera as calibration.txt: `fx fy cx cy`.
+TEST_F(TumDatasetTest, Eth3dCalibrationIsTheCameraWhenTheFolderHasNoCameraYaml) {
+  fs::remove(folder_ / "camera.yaml");
+  writeText(folder_ / "calibration.txt", "726.21081542969 726.5 359.2048034668 202.47247314453\n");
+  const auto dataset = TumDataset::open(folder_);
+  EXPECT_EQ(dataset.camera().fx, 726.21081542969);
+  EXPECT_EQ(dataset.camera().fy, 726.5);
+  EXPECT_EQ(dataset.camera().cx, 359.2048034668);
+  EXPECT_EQ(dataset.camera().cy, 202.47247314453);
+  EXPECT_EQ(dataset.camera().width, TinyDataset::kWidth);
+  EXPECT_EQ(dataset.camera().height, TinyDataset::kHeight);
+  EXPECT_EQ(dataset.camera().depth_factor, 5000.0);
+  EXPECT_FALSE(dataset.camera().hasDistortion());
+  EXPECT_EQ(dataset.cameraSource(), "file " + (folder_ / "calibration.txt").string() +
+                                        " (ETH3D calibration in the dataset folder)");
+  EXPECT_EQ(dataset.loadFrame(0).rgb.cols, TinyDataset::kWidth);
+
+  writeCameraYaml(folder_ / "camera.yaml", TinyDataset::camera());
+  EXPECT_EQ(TumDataset::open(folder_).camera().name, "tiny");
+
+  fs::remove(folder_ / "camera.yaml");
+  writeText(folder_ / "calibration.txt", "726.2 726.5 359.2\n");
+  EXPECT_EQ(openError(folder_),
+            at(folder_, "calibration.txt", 1) + "expected 'fx fy cx cy' but found 3 field(s)");
+  writeText(folder_ / "calibration.txt", "726.2 726.5 359.2 202.4\n1 2 3 4\n");
+  EXPECT_EQ(openError(folder_), (folder_ / "calibration.txt").string() +
+                                    ": expected one line 'fx fy cx cy' but found 2 line(s)");
+}
+
 TEST_F(TumDatasetTest, LabelsAndInstancesAreAttachedAndLoaded) {
   cv::Mat labels(TinyDataset::kHeight, TinyDataset::kWidth, CV_8UC1, cv::Scalar(8));
   cv::Mat instances(TinyDataset::kHeight, TinyDataset::kWidth, CV_16UC1, cv::Scalar(1000));
@@ -215,20 +261,34 @@ TEST_F(TumDatasetTest, MalformedListLinesNameFileAndLine) {
   EXPECT_EQ(openError(folder_), second + "timestamp is not a finite number: '1305031102.2O8637'");
 }
 
-TEST_F(TumDatasetTest, UnorderedOrDuplicatedTimestampsInAnyList) {
+// The lists are read as associate.py reads them: sorted by time, a timestamp's later line wins.
+TEST_F(TumDatasetTest, UnorderedOrDuplicatedTimestampsAreReadLikeTheTumTools) {
   auto swapped = tiny_.depth_stamps;
   std::swap(swapped[1], swapped[2]);
   writeText(folder_ / "depth.txt", testing::imageList(swapped, "depth"));
-  EXPECT_TRUE(
-      contains(openError(folder_), at(folder_, "depth.txt", TinyDataset::kFirstListLine + 2) +
-                                       "timestamp 1305031102.216637 is out of order"));
+  testing::CapturedLog log;
+  const auto dataset = TumDataset::open(folder_);
+  ASSERT_EQ(dataset.size(), 4u);
+  for (std::size_t i = 0; i < dataset.size(); ++i) {
+    EXPECT_NEAR(dataset.frames()[i].depth_timestamp, tiny_.depth_stamps[i], 1e-6) << i;
+  }
+  EXPECT_TRUE(contains(log.text(), "[warning] " +
+                                       at(folder_, "depth.txt", TinyDataset::kFirstListLine + 2) +
+                                       "1 timestamp out of order (first 1305031102.216637 after "));
 
+  // Frame 1's mask line repeats frame 0's timestamp: the later line wins, and frame 1 has no mask.
   auto doubled = tiny_.rgb_stamps;
   doubled[1] = doubled[0];
   writeText(folder_ / "mask.txt", testing::imageList(doubled, "mask"));
-  writeText(folder_ / "depth.txt", testing::imageList(tiny_.depth_stamps, "depth"));
-  EXPECT_EQ(openError(folder_), at(folder_, "mask.txt", TinyDataset::kFirstListLine + 1) +
-                                    "duplicated timestamp 1305031102.175304");
+  EXPECT_EQ(
+      openError(folder_),
+      (folder_ / "mask.txt").string() +
+          fmt::format(": no mask within 0.02 s of frame 1 (colour timestamp {:.6f}, {})",
+                      tiny_.rgb_stamps[1],
+                      (folder_ / fmt::format("rgb/{:.6f}.png", tiny_.rgb_stamps[1])).string()));
+  EXPECT_TRUE(contains(log.text(), "[warning] " +
+                                       at(folder_, "mask.txt", TinyDataset::kFirstListLine + 1) +
+                                       "1 duplicated timestamp (first 1305031102.175304)"));
 }
 
 TEST_F(TumDatasetTest, EmptySequences) {
@@ -308,6 +368,21 @@ TEST_F(TumDatasetTest, LoadFrameErrorsNameTheImageFile) {
   writeText(rgb, "not a png");
   EXPECT_TRUE(contains(errorMessage([&] { (void)dataset.loadFrame(2); }),
                        rgb.string() + ": cannot decode the image"));
+}
+
+TEST_F(TumDatasetTest, DamagedImagesThrowDamagedImageErrorNamingTheFile) {
+  const auto dataset = TumDataset::open(folder_);
+  const fs::path depth = dataset.frames()[1].depth_path;
+  fs::resize_file(depth, fs::file_size(depth) / 2);
+  try {
+    (void)dataset.loadFrame(1);
+    FAIL() << "expected a DamagedImageError";
+  } catch (const DamagedImageError& e) {
+    EXPECT_EQ(std::string(e.what()), depth.string() +
+                                         ": damaged image: the PNG data stops before its IEND "
+                                         "chunk: the file is truncated");
+  }
+  EXPECT_NO_THROW((void)dataset.loadFrame(0));
 }
 
 TEST(TumDatasetRealData, Fr1Xyz300OpensWithFreiburg1CameraAndGroundTruth) {

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <opencv2/core.hpp>
+#include <optional>
 
+#include "segslam/io/damaged_frames.h"
+#include "segslam/io/frame_images.h"
 #include "segslam/io/timestamp_association.h"
 
 namespace segslam::system {
@@ -35,6 +38,17 @@ std::size_t framesWithGroundTruth(const io::TumDataset& dataset, std::size_t fra
       .size();
 }
 
+// The frame, or nothing when an image of it is damaged (warned and counted by `damaged`).
+std::optional<io::RgbdFrame> loadUndamaged(const io::TumDataset& dataset, std::size_t i,
+                                           io::DamagedFrames& damaged) {
+  try {
+    return dataset.loadFrame(i);
+  } catch (const io::DamagedImageError& e) {
+    damaged.skip(i, dataset.frames()[i].timestamp, e.what());
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 DatasetCheck checkDataset(const io::TumDataset& dataset, std::size_t max_frames,
@@ -42,29 +56,36 @@ DatasetCheck checkDataset(const io::TumDataset& dataset, std::size_t max_frames,
   DatasetCheck check;
   check.frames = std::min(dataset.size(), max_frames);
   const auto& records = dataset.frames();
+  io::DamagedFrames damaged(dataset.folder(), check.frames);
   double valid_share_sum = 0.0;
   double dynamic_share_sum = 0.0;
   check.min_depth_m = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < check.frames; ++i) {
-    const io::RgbdFrame frame = dataset.loadFrame(i);
-    const DepthStats depth = depthStats(frame.depth);
-    valid_share_sum += depth.valid_share;
-    check.min_depth_m = std::min(check.min_depth_m, depth.min_m);
-    check.max_depth_m = std::max(check.max_depth_m, depth.max_m);
-    check.max_rgb_depth_gap_s = std::max(
-        check.max_rgb_depth_gap_s, std::abs(records[i].timestamp - records[i].depth_timestamp));
-    if (!frame.mask.empty()) {
-      const int dynamic = cv::countNonZero(frame.mask);
-      dynamic_share_sum += static_cast<double>(dynamic) / static_cast<double>(frame.mask.total());
-      if (dynamic > 0) ++check.frames_with_dynamic_pixels;
+    if (const auto frame = loadUndamaged(dataset, i, damaged)) {
+      const DepthStats depth = depthStats(frame->depth);
+      valid_share_sum += depth.valid_share;
+      check.min_depth_m = std::min(check.min_depth_m, depth.min_m);
+      check.max_depth_m = std::max(check.max_depth_m, depth.max_m);
+      check.max_rgb_depth_gap_s = std::max(
+          check.max_rgb_depth_gap_s, std::abs(records[i].timestamp - records[i].depth_timestamp));
+      if (!frame->mask.empty()) {
+        const int dynamic = cv::countNonZero(frame->mask);
+        dynamic_share_sum +=
+            static_cast<double>(dynamic) / static_cast<double>(frame->mask.total());
+        if (dynamic > 0) ++check.frames_with_dynamic_pixels;
+      }
     }
     if (on_frame) on_frame();
   }
+  check.skipped_frames = damaged.count();
+  const std::size_t loaded = check.frames - check.skipped_frames;
   if (check.frames > 0) {
     check.duration_s = records[check.frames - 1].timestamp - records[0].timestamp;
     check.mean_frame_rate = check.duration_s > 0.0 ? (check.frames - 1) / check.duration_s : 0.0;
-    check.valid_depth_share = valid_share_sum / check.frames;
-    check.mean_dynamic_share = dynamic_share_sum / check.frames;
+  }
+  if (loaded > 0) {
+    check.valid_depth_share = valid_share_sum / static_cast<double>(loaded);
+    check.mean_dynamic_share = dynamic_share_sum / static_cast<double>(loaded);
   }
   if (!std::isfinite(check.min_depth_m)) check.min_depth_m = 0.0;
   if (dataset.groundTruth()) check.ground_truth_poses = dataset.groundTruth()->size();
@@ -74,6 +95,7 @@ DatasetCheck checkDataset(const io::TumDataset& dataset, std::size_t max_frames,
 
 nlohmann::json toJson(const DatasetCheck& check) {
   return {{"frames", check.frames},
+          {"skipped_frames", check.skipped_frames},
           {"duration_s", check.duration_s},
           {"mean_frame_rate", check.mean_frame_rate},
           {"max_rgb_depth_gap_s", check.max_rgb_depth_gap_s},

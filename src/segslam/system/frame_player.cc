@@ -3,6 +3,7 @@
 #include <future>
 #include <thread>
 
+#include "segslam/io/frame_images.h"
 #include "segslam/util/elapsed_time.h"
 #include "segslam/util/thread_priority.h"
 
@@ -24,29 +25,36 @@ FramePlayer::FramePlayer(const io::TumDataset& dataset, FrameMaskSource& masks,
 
 PlayedFrame FramePlayer::take(std::size_t index, std::size_t last) {
   PlayedFrame played;
-  played.frame = next_ ? std::move(*next_) : load(index);
+  LoadedFrame loaded = next_ ? std::move(*next_) : load(index);
   next_.reset();
+  if (loaded.damage) {
+    played.damage = std::move(loaded.damage);
+    return played;
+  }
+  played.frame = std::move(loaded.frame);
+  played.frame_id = next_frame_id_++;
   if (options_.realtime) played.lag_ms = waitForArrival(played.frame.timestamp);
   // Since the last frame's masks: tracking it, loading this one and waiting for its arrival.
   tracking_load_.sample(util::thisThreadCpuSeconds(), wallSeconds());
   masks_.setTrackingBusyShare(tracking_load_.value());
   played.masks =
-      options_.load_ahead ? masksWhileLoadingNext(played, index, last) : timedMasks(played, index);
+      options_.load_ahead ? masksWhileLoadingNext(played, index, last) : timedMasks(played);
   // Waiting for masks is not time the tracking thread could have given the segmenters.
   tracking_load_.restart(util::thisThreadCpuSeconds(), wallSeconds());
   return played;
 }
 
-FrameMasks FramePlayer::timedMasks(PlayedFrame& played, std::size_t index) {
+FrameMasks FramePlayer::timedMasks(PlayedFrame& played) {
   const auto start = std::chrono::steady_clock::now();
-  FrameMasks masks = masks_.masks(played.frame, index);
+  FrameMasks masks = masks_.masks(played.frame, played.frame_id);
   played.mask_ms = util::millisecondsSince(start);
   return masks;
 }
 
 FrameMasks FramePlayer::masksWhileLoadingNext(PlayedFrame& played, std::size_t index,
                                               std::size_t last) {
-  auto masks = std::async(std::launch::async, [&] { return masks_.masks(played.frame, index); });
+  auto masks =
+      std::async(std::launch::async, [&] { return masks_.masks(played.frame, played.frame_id); });
   if (index < last) next_ = load(index + 1);
   const auto start = std::chrono::steady_clock::now();
   FrameMasks ready = masks.get();
@@ -54,8 +62,12 @@ FrameMasks FramePlayer::masksWhileLoadingNext(PlayedFrame& played, std::size_t i
   return ready;
 }
 
-io::RgbdFrame FramePlayer::load(std::size_t index) {
-  return dataset_.loadFrame(index, options_.layers);
+FramePlayer::LoadedFrame FramePlayer::load(std::size_t index) {
+  try {
+    return {dataset_.loadFrame(index, options_.layers), std::nullopt};
+  } catch (const io::DamagedImageError& e) {
+    return {{}, e.what()};
+  }
 }
 
 double FramePlayer::waitForArrival(double timestamp) {

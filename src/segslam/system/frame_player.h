@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstddef>
 #include <optional>
+#include <string>
 
 #include "segslam/io/tum_dataset.h"
 #include "segslam/segmentation/busy_share.h"
@@ -11,8 +12,14 @@
 namespace segslam::system {
 
 struct PlayedFrame {
+  // Set when an image of the frame is damaged (io::DamagedImageError's message): the frame is to
+  // be skipped, and `frame` and `masks` are empty; it never reached the mask source.
+  std::optional<std::string> damage;
   io::RgbdFrame frame;
   FrameMasks masks;
+  // The frame's number among the frames handed on, damaged ones not counted: the frame id SLAM
+  // gives it, and the index its masks were made for (FrameMaskSource::masks).
+  std::size_t frame_id = 0;
   double mask_ms = 0.0;  // the tracking thread's time on the masks, or waiting for them
   double lag_ms = 0.0;   // realtime: how late the frame was taken after its arrival (0 if early)
 };
@@ -38,14 +45,19 @@ class FramePlayer {
   FramePlayer& operator=(const FramePlayer&) = delete;
 
   // Frame `index` (0, 1, ... in order, each once) and its masks; `last` is the index of the last
-  // frame that will be asked for.
+  // frame that will be asked for. A frame with a damaged image comes back with `damage` set.
   PlayedFrame take(std::size_t index, std::size_t last);
 
  private:
-  [[nodiscard]] io::RgbdFrame load(std::size_t index);
+  struct LoadedFrame {
+    io::RgbdFrame frame;
+    std::optional<std::string> damage;
+  };
+
+  [[nodiscard]] LoadedFrame load(std::size_t index);
   [[nodiscard]] double waitForArrival(double timestamp);
   // The frame's masks, with the calling thread's time on them in `played.mask_ms`.
-  [[nodiscard]] FrameMasks timedMasks(PlayedFrame& played, std::size_t index);
+  [[nodiscard]] FrameMasks timedMasks(PlayedFrame& played);
   [[nodiscard]] FrameMasks masksWhileLoadingNext(PlayedFrame& played, std::size_t index,
                                                  std::size_t last);
 
@@ -53,7 +65,8 @@ class FramePlayer {
   FrameMaskSource& masks_;
   FramePlayerOptions options_;
   segmentation::BusyShare tracking_load_;
-  std::optional<io::RgbdFrame> next_;  // loaded ahead
+  std::optional<LoadedFrame> next_;  // loaded ahead
+  std::size_t next_frame_id_ = 0;
   std::optional<double> first_timestamp_;
   std::chrono::steady_clock::time_point first_arrival_;
 };

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "segslam/io/io_test_support.h"
 #include "segslam/synth/generator.h"
 #include "segslam/testing/test_support.h"
 
@@ -50,6 +51,32 @@ TEST(FramePlayer, LoadingAheadGivesTheSameFramesAndMasksInOrder) {
     ASSERT_EQ(ahead[i].masks.dynamic.size(), expected.rgb.size()) << i;
     // Synchronous segmentation: the masks do not depend on the thread that made them.
     EXPECT_EQ(cv::norm(ahead[i].masks.dynamic, in_turn[i].masks.dynamic, cv::NORM_INF), 0.0) << i;
+  }
+}
+
+// A damaged frame comes back flagged and never reaches the masks: the frames after it are numbered
+// as SLAM numbers the frames it is handed.
+TEST(FramePlayer, DamagedFramesAreFlaggedAndNotNumbered) {
+  const ScopedTempDir dir;
+  const io::TumDataset whole = smallSequence(dir);
+  const auto jpeg =
+      io::testing::replaceByTruncatedJpeg(dir.path() / "sequence", whole.frames()[3].rgb_path);
+  const io::TumDataset dataset = io::TumDataset::open(dir.path() / "sequence");
+  for (const bool load_ahead : {true, false}) {
+    const auto played = playAll(dataset, load_ahead);
+    ASSERT_EQ(played.size(), dataset.size());
+    ASSERT_TRUE(played[3].damage) << load_ahead;
+    EXPECT_EQ(*played[3].damage, jpeg.string() +
+                                     ": damaged image: the JPEG data stops before its end marker "
+                                     "(FF D9): the file is truncated");
+    EXPECT_TRUE(played[3].frame.rgb.empty());
+    EXPECT_TRUE(played[3].masks.dynamic.empty());
+    for (std::size_t i = 0; i < played.size(); ++i) {
+      if (i == 3) continue;
+      EXPECT_FALSE(played[i].damage) << i;
+      EXPECT_EQ(played[i].frame_id, i < 3 ? i : i - 1) << i;
+      EXPECT_EQ(played[i].masks.dynamic.size(), whole.loadFrame(0).rgb.size()) << i;
+    }
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fmt/os.h>
+#include <spdlog/spdlog.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include "segslam/eval/closest_index.h"
 #include "segslam/eval/evaluation_plots.h"
 #include "segslam/eval/evaluation_report.h"
+#include "segslam/io/damaged_frames.h"
 #include "segslam/io/trajectory_io.h"
 #include "segslam/system/frame_player.h"
 #include "segslam/system/map_keyframe_feed.h"
@@ -74,18 +76,31 @@ nlohmann::json timingJson(const TimingSummary& t) {
           {"max_ms", t.max_ms}};
 }
 
+// The ATE, and the RPE where it can be computed. What cannot be computed is reported with its
+// reason, never fails the run: a run of a few frames is shorter than the RPE's delta of 1 s.
 void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
               const std::filesystem::path& out_dir, const core::Trajectory& estimate,
               SequenceRunSummary& summary) {
-  if (!dataset.groundTruth() || estimate.size() < 2) return;
+  summary.has_ground_truth = dataset.groundTruth().has_value();
+  if (!summary.has_ground_truth) {
+    summary.evaluation_not_computed = "the dataset has no groundtruth.txt";
+    return;
+  }
   eval::TrajectoryEvaluation evaluation;
   evaluation.ground_truth_file = dataset.folder() / "groundtruth.txt";
   evaluation.estimate_file = out_dir / "CameraTrajectory.txt";
   evaluation.options = options.evaluation;
   evaluation.ground_truth = *dataset.groundTruth();
   evaluation.estimate = estimate;
-  evaluation.ate = eval::evaluateAte(evaluation.ground_truth, estimate, options.evaluation.ate);
-  evaluation.rpe = eval::evaluateRpe(evaluation.ground_truth, estimate, options.evaluation.rpe);
+  try {
+    evaluation.ate = eval::evaluateAte(evaluation.ground_truth, estimate, options.evaluation.ate);
+  } catch (const util::Error& e) {
+    summary.evaluation_not_computed = e.what();
+    spdlog::warn("no trajectory evaluation: {}", e.what());
+    return;
+  }
+  eval::addRpe(evaluation);
+  if (!evaluation.rpe) spdlog::warn("RPE not computed: {}", evaluation.rpe_not_computed);
   eval::writeEvaluationJson(out_dir / "evaluation.json", evaluation);
   io::writeTumTrajectory(out_dir / "GroundTruthAligned.txt",
                          eval::groundTruthInEstimateFrame(evaluation.ground_truth, evaluation.ate,
@@ -97,6 +112,12 @@ void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
     summary.outputs.push_back(plot);
   }
   summary.evaluation = std::move(evaluation);
+}
+
+void writeSummaryJson(const std::filesystem::path& file, const SequenceRunSummary& summary) {
+  std::ofstream out(file);
+  out << toJson(summary).dump(2) << "\n";
+  if (!out) util::failAt(file, "cannot write");
 }
 
 std::optional<geometry::Pose> groundTruthNear(const core::Trajectory& ground_truth, double t) {
@@ -159,8 +180,13 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
                                  options.build_map};
     FramePlayer player(dataset, masks, {layers, options.realtime, !options.slam.deterministic});
     const auto first_frame = std::chrono::steady_clock::now();
+    io::DamagedFrames damaged(dataset.folder(), summary.frames);
     for (std::size_t i = 0; i < summary.frames; ++i) {
       const PlayedFrame played = player.take(i, summary.frames - 1);
+      if (played.damage) {
+        damaged.skip(i, dataset.frames()[i].timestamp, *played.damage);
+        continue;
+      }
       const io::RgbdFrame& frame = played.frame;
       const FrameMasks& frame_masks = played.masks;
       if (options.realtime) realtime_lag_ms.push_back(played.lag_ms);
@@ -178,16 +204,17 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       stats.back().mask_ms = played.mask_ms;
       stats.back().tracking_ms += played.mask_ms;
       if (stats.back().keyframe) {
-        masks.segmentKeyFrame(frame, i);
+        masks.segmentKeyFrame(frame, played.frame_id);
         if (map_feed) {
           map_feed->addKeyFrame(stats.back().frame_id, frame.timestamp,
                                 {frame.rgb, frame.depth, frame_masks.dynamic, frame_masks.labels,
                                  frame_masks.instances});
         }
       }
-      if (map_feed) map_feed->setTrackedFrame(i);
+      if (map_feed) map_feed->setTrackedFrame(stats.back().frame_id);
       if (on_frame) on_frame(stats.back());
     }
+    summary.skipped_frames = damaged.count();
     if (map_feed) map_feed->flush();
     summary.tracking_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - first_frame).count();
@@ -232,7 +259,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   summary.peak_rss_mb = peakRssMegabytes();
   writeFrameLog(out_dir / "frame_log.csv", stats);
   summary.outputs.push_back(out_dir / "frame_log.csv");
-  std::ofstream(out_dir / "summary.json") << toJson(summary).dump(2) << "\n";
+  writeSummaryJson(out_dir / "summary.json", summary);
   summary.outputs.push_back(out_dir / "summary.json");
   return summary;
 }
@@ -267,12 +294,33 @@ nlohmann::json loopClosingJson(const SequenceRunSummary& summary) {
       {"loops", loops}};
 }
 
+void addRpeJson(const std::optional<eval::RpeResult>& rpe, const std::string& not_computed,
+                nlohmann::json& json) {
+  json["rpe_translational_rmse_m"] = rpe ? nlohmann::json(rpe->translational.rmse) : nullptr;
+  json["rpe_rotational_rmse_deg"] = rpe ? nlohmann::json(rpe->rotational_deg.rmse) : nullptr;
+  if (!rpe) json["rpe_not_computed"] = not_computed;
+}
+
+// Without ground truth the figures are left out; with it, a figure that could not be computed is
+// null with its reason beside it.
+void addEvaluationJson(const SequenceRunSummary& summary, nlohmann::json& json) {
+  if (const auto& evaluation = summary.evaluation) {
+    json["ate_rmse_m"] = evaluation->ate.statistics.rmse;
+    addRpeJson(evaluation->rpe, evaluation->rpe_not_computed, json);
+  } else if (summary.has_ground_truth) {
+    json["ate_rmse_m"] = nullptr;
+    json["ate_not_computed"] = summary.evaluation_not_computed;
+    addRpeJson(std::nullopt, summary.evaluation_not_computed, json);
+  }
+}
+
 }  // namespace
 
 nlohmann::json toJson(const SequenceRunSummary& summary) {
   nlohmann::json json = {{"frames", summary.frames},
                          {"tracked_frames", summary.tracked_frames},
                          {"lost_frames", summary.lost_frames},
+                         {"skipped_frames", summary.skipped_frames},
                          {"keyframes", summary.keyframes},
                          {"map_points", summary.map_points},
                          {"tracking_time", timingJson(summary.tracking)},
@@ -297,11 +345,7 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
                                   {"observations_dropped", own.observations_dropped}};
   }
   if (summary.map) json["map"] = toJson(*summary.map);
-  if (summary.evaluation) {
-    json["ate_rmse_m"] = summary.evaluation->ate.statistics.rmse;
-    json["rpe_translational_rmse_m"] = summary.evaluation->rpe.translational.rmse;
-    json["rpe_rotational_rmse_deg"] = summary.evaluation->rpe.rotational_deg.rmse;
-  }
+  addEvaluationJson(summary, json);
   return json;
 }
 

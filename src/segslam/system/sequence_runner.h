@@ -43,9 +43,10 @@ struct TimingSummary {
 };
 
 struct SequenceRunSummary {
-  std::size_t frames = 0;
+  std::size_t frames = 0;  // played, skipped ones included
   std::size_t tracked_frames = 0;
   std::size_t lost_frames = 0;
+  std::size_t skipped_frames = 0;  // for a damaged image: never handed to masks or SLAM
   std::size_t keyframes = 0;
   std::size_t map_points = 0;
   TimingSummary tracking;  // per frame, extraction included
@@ -66,7 +67,10 @@ struct SequenceRunSummary {
   double network_mean_ms = 0.0;
   int points_culled_by_late_masks = 0;
   mapping::OwnMaskStats own_masks;
+  // The ATE, and the RPE where it can be computed (evaluation->rpe_not_computed says why not).
   std::optional<eval::TrajectoryEvaluation> evaluation;
+  bool has_ground_truth = false;
+  std::string evaluation_not_computed;  // why there is no evaluation
   std::optional<MapSummary> map;
   bool loop_closing = false;
   loop::LoopClosingStats loops;
@@ -82,11 +86,15 @@ struct SequenceRunSummary {
 
 // Runs SLAM over a dataset and writes the run folder: CameraTrajectory.txt and
 // KeyFrameTrajectory.txt (TUM format), frame_log.csv (per-frame timings and state),
-// summary.json, with ground truth evaluation.json and the evaluation plots, and with build_map the
-// dense map (map/static.ply, map/dynamic.ply, map/objects.json, map/objects/*.ply) built from the
-// keyframes' images and final poses, labelled by the network (semantic, fused masks: see
-// FrameMaskSource::masks) or else by the dataset's labels and instances when it has them.
-// Throws util::Error when the dataset lacks what the options need (e.g. oracle masks).
+// summary.json, with ground truth evaluation.json and the evaluation plots (where the ATE can be
+// computed: an evaluation that cannot be is reported in the summary and does not fail the run),
+// and with build_map the dense map (map/static.ply, map/dynamic.ply, map/objects.json,
+// map/objects/*.ply) built from the keyframes' images and final poses, labelled by the network
+// (semantic, fused masks: see FrameMaskSource::masks) or else by the dataset's labels and
+// instances when it has them.
+// Frames with a damaged image (io::DamagedImageError) are skipped with a warning and counted;
+// throws util::Error when more than half of them are (io::DamagedFrames), and when the dataset
+// lacks what the options need (e.g. oracle masks).
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
                                const std::filesystem::path& out_dir,
                                const std::function<void(const FrameStats&)>& on_frame);

@@ -1,12 +1,18 @@
 #include "segslam/system/sequence_runner.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
+#include "segslam/io/io_test_support.h"
+#include "segslam/io/trajectory_io.h"
 #include "segslam/io/tum_dataset.h"
 #include "segslam/synth/generator.h"
 #include "segslam/testing/test_support.h"
+#include "segslam/util/error.h"
 
 // End-to-end runs of the whole pipeline (extraction, tracking, local mapping) in deterministic
 // mode. The bounds are several times the figures measured by bench/tracking_accuracy.sh, so they
@@ -119,6 +125,120 @@ TEST(SequenceRunner, RealtimePlaybackKeepsToTheSequencesTimestamps) {
   EXPECT_GE(summary.realtime_lag.max_ms, 0.0);
 }
 
+SequenceRunOptions quickOptions() {
+  SequenceRunOptions options;
+  options.slam.deterministic = true;
+  options.slam.loop_closing = false;
+  options.build_map = false;
+  return options;
+}
+
+nlohmann::json summaryJson(const std::filesystem::path& run) {
+  return nlohmann::json::parse(testing::fileContents(run / "summary.json"));
+}
+
+// 20 frames span 0.63 s: the ATE is computed, the RPE over 1 s cannot be, and the run succeeds.
+TEST(SequenceRunner, ARunShorterThanTheRpeDeltaReportsTheRpeAsNotComputed) {
+  const ScopedTempDir dir;
+  synth::SynthOptions synth_options = syntheticSequence(0);
+  synth_options.frames = 20;
+  synth::generateSequence(synth_options, dir.path() / "sequence");
+  const auto summary = runSequence(io::TumDataset::open(dir.path() / "sequence"), quickOptions(),
+                                   dir.path() / "run", [](const FrameStats&) {});
+  ASSERT_TRUE(summary.evaluation);
+  EXPECT_LT(ateRmse(summary), 0.005);
+  EXPECT_FALSE(summary.evaluation->rpe);
+  const std::string reason = summary.evaluation->rpe_not_computed;
+  EXPECT_EQ(
+      reason.rfind("the estimate spans 0.633 s (20 poses) and has 0 pose pair(s) 1 s apart", 0), 0u)
+      << reason;
+  const auto json = summaryJson(dir.path() / "run");
+  EXPECT_DOUBLE_EQ(json["ate_rmse_m"].get<double>(), ateRmse(summary));
+  EXPECT_TRUE(json["rpe_translational_rmse_m"].is_null());
+  EXPECT_TRUE(json["rpe_rotational_rmse_deg"].is_null());
+  EXPECT_EQ(json["rpe_not_computed"], reason);
+  const auto evaluation =
+      nlohmann::json::parse(testing::fileContents(dir.path() / "run" / "evaluation.json"));
+  EXPECT_TRUE(evaluation["rpe"].is_null());
+  EXPECT_EQ(evaluation["rpe_not_computed"], reason);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "run" / "plots" / "ate_error.svg"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "run" / "plots" / "rpe_error.svg"));
+}
+
+TEST(SequenceRunner, GroundTruthOfAnotherTimeLeavesTheRunWithoutEvaluation) {
+  const ScopedTempDir dir;
+  synth::SynthOptions synth_options = syntheticSequence(0);
+  synth_options.frames = 10;
+  synth::generateSequence(synth_options, dir.path() / "sequence");
+  std::ofstream(dir.path() / "sequence" / "groundtruth.txt")
+      << "1.0 0 0 0 0 0 0 1\n2.0 0 0 0 0 0 0 1\n3.0 0 0 0 0 0 0 1\n";
+  const auto summary = runSequence(io::TumDataset::open(dir.path() / "sequence"), quickOptions(),
+                                   dir.path() / "run", [](const FrameStats&) {});
+  EXPECT_FALSE(summary.evaluation);
+  EXPECT_EQ(summary.evaluation_not_computed,
+            "only 0 estimated pose(s) match a ground-truth timestamp within 0.02 s (offset 0 s); "
+            "need at least 2");
+  const auto json = summaryJson(dir.path() / "run");
+  EXPECT_TRUE(json["ate_rmse_m"].is_null());
+  EXPECT_EQ(json["ate_not_computed"], summary.evaluation_not_computed);
+  EXPECT_EQ(json["rpe_not_computed"], summary.evaluation_not_computed);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "run" / "evaluation.json"));
+}
+
+// A truncated JPEG is skipped, with a warning: never handed to the masks or SLAM.
+TEST(SequenceRunner, AFrameWithADamagedImageIsSkippedAndCounted) {
+  const ScopedTempDir dir;
+  synth::SynthOptions synth_options = syntheticSequence(0);
+  synth_options.frames = 30;
+  synth::generateSequence(synth_options, dir.path() / "sequence");
+  const auto damaged_frame = io::TumDataset::open(dir.path() / "sequence").frames()[10];
+  const auto jpeg =
+      io::testing::replaceByTruncatedJpeg(dir.path() / "sequence", damaged_frame.rgb_path);
+  io::testing::CapturedLog log;
+  auto options = quickOptions();
+  options.masks.source = MaskSource::kGeometric;
+  const auto summary = runSequence(io::TumDataset::open(dir.path() / "sequence"), options,
+                                   dir.path() / "run", [](const FrameStats&) {});
+  EXPECT_EQ(summary.frames, 30u);
+  EXPECT_EQ(summary.skipped_frames, 1u);
+  EXPECT_EQ(summary.tracked_frames, 29u);
+  EXPECT_LT(ateRmse(summary), 0.005);
+  EXPECT_NE(log.text().find(fmt::format("[warning] frame 10 ({:.6f}) skipped: {}: damaged image: "
+                                        "the JPEG data stops before its end marker (FF D9)",
+                                        damaged_frame.timestamp, jpeg.string())),
+            std::string::npos)
+      << log.text();
+  const auto trajectory = io::readTumTrajectory(dir.path() / "run" / "CameraTrajectory.txt");
+  for (const auto& pose : trajectory.poses()) {
+    EXPECT_GT(std::abs(pose.timestamp - damaged_frame.timestamp), 1e-4);
+  }
+  EXPECT_EQ(summaryJson(dir.path() / "run")["skipped_frames"], 1);
+}
+
+TEST(SequenceRunner, ASequenceOfMostlyDamagedImagesIsAnErrorNamingIt) {
+  const ScopedTempDir dir;
+  synth::SynthOptions synth_options = syntheticSequence(0);
+  synth_options.frames = 6;
+  synth::generateSequence(synth_options, dir.path() / "sequence");
+  const auto folder = dir.path() / "sequence";
+  const auto frames = io::TumDataset::open(folder).frames();
+  const auto first = io::testing::replaceByTruncatedJpeg(folder, frames[1].rgb_path);
+  for (std::size_t i = 2; i <= 4; ++i)
+    io::testing::replaceByTruncatedJpeg(folder, frames[i].rgb_path);
+  const auto dataset = io::TumDataset::open(folder);
+  try {
+    runSequence(dataset, quickOptions(), dir.path() / "run", [](const FrameStats&) {});
+    FAIL() << "expected an error";
+  } catch (const util::Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              folder.string() +
+                  ": more than half of the 6 frames have damaged images (4 so far; the first: " +
+                  first.string() +
+                  ": damaged image: the JPEG data stops before its end marker (FF D9): the file "
+                  "is truncated)");
+  }
+}
+
 TEST(SequenceRunner, RealStaticSequence) {
   SEGSLAM_REQUIRE_SHARED(dataset, "tum_fr1_xyz_300");
   const ScopedTempDir dir;
@@ -159,6 +279,18 @@ TEST(SequenceRunner, RealWalkerWithSemanticMasksFromTheNetwork) {
   EXPECT_GT(summary.own_masks.keyframes_with_own_mask, 0);
   EXPECT_EQ(summary.own_masks.keyframes_without, 0) << "deterministic: every keyframe's mask";
   EXPECT_LT(ateRmse(summary), 0.02);  // 0.19 m without masks over the same frames
+}
+
+// The run of the issue: `segslam run --dataset tum_fr1_xyz_300 --max-frames 20` failed on its RPE.
+TEST(SequenceRunner, RealSequenceOfTwentyFramesIsEvaluatedAsFarAsItCanBe) {
+  SEGSLAM_REQUIRE_SHARED(dataset, "tum_fr1_xyz_300");
+  const ScopedTempDir dir;
+  const auto summary = runDeterministic(dataset, MaskSource::kNone, dir.path(), 20, false);
+  EXPECT_EQ(summary.tracked_frames, 20u);
+  ASSERT_TRUE(summary.evaluation);
+  EXPECT_LT(ateRmse(summary), 0.02);
+  EXPECT_FALSE(summary.evaluation->rpe);
+  EXPECT_TRUE(summaryJson(dir.path())["rpe_translational_rmse_m"].is_null());
 }
 
 }  // namespace

@@ -1,12 +1,15 @@
 #include "segslam/util/text_file.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <numeric>
 #include <sstream>
+#include <unordered_set>
 
 #include "segslam/util/error.h"
 
@@ -28,9 +31,62 @@ std::vector<std::string> splitFields(std::string_view line) {
   return fields;
 }
 
+std::string_view plural(std::size_t count) { return count == 1 ? "" : "s"; }
+
+struct FirstOffence {
+  std::size_t count = 0;
+  std::size_t row = 0;  // the first offending row
+};
+
+// Rows whose timestamp an earlier row already had: the rows a dict keeps the later line of.
+FirstOffence repeatedTimestamps(const std::vector<double>& stamps) {
+  FirstOffence repeated;
+  std::unordered_set<double> seen;
+  for (std::size_t k = 0; k < stamps.size(); ++k) {
+    if (seen.insert(stamps[k]).second) continue;
+    if (repeated.count++ == 0) repeated.row = k;
+  }
+  return repeated;
+}
+
+// Rows whose timestamp is smaller than the row's before them.
+FirstOffence unorderedTimestamps(const std::vector<double>& stamps) {
+  FirstOffence unordered;
+  for (std::size_t k = 1; k < stamps.size(); ++k) {
+    if (stamps[k] >= stamps[k - 1]) continue;
+    if (unordered.count++ == 0) unordered.row = k;
+  }
+  return unordered;
+}
+
+std::string repairWarning(const std::vector<double>& stamps, const std::vector<int>& lines,
+                          const std::filesystem::path& file) {
+  const FirstOffence repeated = repeatedTimestamps(stamps);
+  const FirstOffence unordered = unorderedTimestamps(stamps);
+  std::vector<std::string> repairs;
+  if (repeated.count > 0) {
+    repairs.push_back(
+        fmt::format("{}:{}: {} duplicated timestamp{} (first {}): the later line of "
+                    "each is used",
+                    file.string(), lines[repeated.row], repeated.count, plural(repeated.count),
+                    stamps[repeated.row]));
+  }
+  if (unordered.count > 0) {
+    repairs.push_back(
+        fmt::format("{}:{}: {} timestamp{} out of order (first {} after {}): the "
+                    "lines are sorted by time",
+                    file.string(), lines[unordered.row], unordered.count, plural(unordered.count),
+                    stamps[unordered.row], stamps[unordered.row - 1]));
+  }
+  if (repairs.empty()) return "";
+  return fmt::format("{}, as the TUM benchmark tools do", fmt::join(repairs, "; "));
+}
+
 }  // namespace
 
 std::vector<TextRow> parseTextRows(std::string_view text) {
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.starts_with(kByteOrderMark)) text.remove_prefix(kByteOrderMark.size());
   std::vector<TextRow> rows;
   int line_number = 0;
   std::size_t pos = 0;
@@ -91,13 +147,21 @@ void requireFieldCount(const TextRow& row, std::size_t count, const std::filesys
   }
 }
 
-void requireIncreasingTimestamp(double previous, double timestamp,
-                                const std::filesystem::path& file, int line) {
-  if (timestamp == previous) failAt(file, line, fmt::format("duplicated timestamp {}", timestamp));
-  if (timestamp < previous) {
-    failAt(file, line,
-           fmt::format("timestamp {} is out of order (previous {})", timestamp, previous));
+TimestampKeyedRows keyRowsByTimestamp(const std::vector<double>& stamps,
+                                      const std::vector<int>& lines,
+                                      const std::filesystem::path& file) {
+  std::vector<std::size_t> order(stamps.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return stamps[a] < stamps[b]; });
+  TimestampKeyedRows keyed;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    // Stable: of equal timestamps the row of the later line comes last, and it is the one kept.
+    const bool later_one_follows = k + 1 < order.size() && stamps[order[k + 1]] == stamps[order[k]];
+    if (!later_one_follows) keyed.rows.push_back(order[k]);
   }
+  keyed.warning = repairWarning(stamps, lines, file);
+  return keyed;
 }
 
 }  // namespace segslam::util

@@ -14,7 +14,8 @@ struct TextRow {
 };
 
 // Splits text the way the TUM RGB-D tools do: commas and tabs count as spaces, blank lines and
-// lines starting with '#' are skipped. Line numbers are kept for error messages.
+// lines starting with '#' are skipped. Line numbers are kept for error messages. A UTF-8 byte
+// order mark (which Windows editors put first) is not content and is dropped.
 std::vector<TextRow> parseTextRows(std::string_view text);
 
 // Reads a whole file; throws Error naming the file when it is missing or cannot be read.
@@ -37,9 +38,18 @@ void requireFields(const TextRow& row, std::size_t min_fields, const std::filesy
 void requireFieldCount(const TextRow& row, std::size_t count, const std::filesystem::path& file,
                        std::string_view expected_format);
 
-// Throws Error("file:line: duplicated timestamp ...") or ("... out of order ...") unless
-// `timestamp` is larger than `previous`: TUM lists and trajectories are sorted by time.
-void requireIncreasingTimestamp(double previous, double timestamp,
-                                const std::filesystem::path& file, int line);
+// Which rows of a TUM list to keep, the way the TUM tools' read_file_list keeps them: it turns
+// the list into a Python dict keyed by timestamp, so of a duplicated timestamp the later line
+// wins, and the tools sort the keys, so the order of the lines does not matter.
+struct TimestampKeyedRows {
+  std::vector<std::size_t> rows;  // indices into the input, one per timestamp, by increasing time
+  // What was repaired, naming the file and the first offending line; empty when nothing was.
+  std::string warning;
+};
+
+// `stamps[k]` is the timestamp of the row on line `lines[k]` of `file` (the same size).
+TimestampKeyedRows keyRowsByTimestamp(const std::vector<double>& stamps,
+                                      const std::vector<int>& lines,
+                                      const std::filesystem::path& file);
 
 }  // namespace segslam::util

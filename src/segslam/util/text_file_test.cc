@@ -78,21 +78,42 @@ TEST(TextFile, FieldCountMustMatchExactly) {
   EXPECT_THROW(requireFieldCount(row, 4, "f.txt", "t a b c"), Error);
 }
 
-TEST(TextFile, TimestampsMustIncreaseStrictly) {
-  EXPECT_NO_THROW(requireIncreasingTimestamp(1.0, 1.5, "f.txt", 3));
-  try {
-    requireIncreasingTimestamp(1.5, 1.5, "f.txt", 3);
-    FAIL() << "expected an error";
-  } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "f.txt:3: duplicated timestamp 1.5");
-  }
-  try {
-    requireIncreasingTimestamp(1305031102.175304, 1305031102.1753, "f.txt", 9);
-    FAIL() << "expected an error";
-  } catch (const Error& e) {
-    EXPECT_STREQ(e.what(),
-                 "f.txt:9: timestamp 1305031102.1753 is out of order (previous 1305031102.175304)");
-  }
+TEST(TextFile, ByteOrderMarkIsNotContent) {
+  const auto rows = parseTextRows("\xEF\xBB\xBF# written on Windows\r\n1.0 a.png\r\n");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].line, 2);
+  EXPECT_EQ(rows[0].fields, (std::vector<std::string>{"1.0", "a.png"}));
+}
+
+// read_file_list of the TUM tools builds a dict: a timestamp's later line wins; keys are sorted.
+TEST(TextFile, RowsAreKeyedByTimestampLikeAPythonDict) {
+  const auto keyed = keyRowsByTimestamp({3.0, 1.0, 2.0, 1.0, 3.0}, {1, 2, 3, 4, 5}, "f.txt");
+  EXPECT_EQ(keyed.rows, (std::vector<std::size_t>{3, 2, 4}));  // 1.0 line 4, 2.0, 3.0 line 5
+  EXPECT_EQ(keyed.warning,
+            "f.txt:4: 2 duplicated timestamps (first 1): the later line of each is used; "
+            "f.txt:2: 2 timestamps out of order (first 1 after 3): the lines are sorted by time, "
+            "as the TUM benchmark tools do");
+}
+
+TEST(TextFile, OrderedUniqueRowsAreKeptAsTheyAreWithoutWarning) {
+  const auto keyed = keyRowsByTimestamp({1.0, 1.5, 2.0}, {3, 4, 6}, "f.txt");
+  EXPECT_EQ(keyed.rows, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_TRUE(keyed.warning.empty());
+  EXPECT_TRUE(keyRowsByTimestamp({}, {}, "f.txt").rows.empty());
+}
+
+TEST(TextFile, OneKindOfRepairIsWarnedAlone) {
+  const auto duplicated = keyRowsByTimestamp({1311868229.5, 1311868229.576, 1311868229.576},
+                                             {10861, 10862, 10863}, "d/groundtruth.txt");
+  EXPECT_EQ(duplicated.rows, (std::vector<std::size_t>{0, 2}));
+  EXPECT_EQ(duplicated.warning,
+            "d/groundtruth.txt:10863: 1 duplicated timestamp (first 1311868229.576): the later "
+            "line of each is used, as the TUM benchmark tools do");
+  const auto unordered = keyRowsByTimestamp({1.0, 3.0, 2.0, 4.0}, {1, 2, 3, 4}, "f.txt");
+  EXPECT_EQ(unordered.rows, (std::vector<std::size_t>{0, 2, 1, 3}));
+  EXPECT_EQ(unordered.warning,
+            "f.txt:3: 1 timestamp out of order (first 2 after 3): the lines are sorted by time, "
+            "as the TUM benchmark tools do");
 }
 
 }  // namespace

@@ -1,0 +1,153 @@
+// The `segslam` commands that write output folders or read sequences, run as a user runs them:
+// every error is one line naming what is wrong, and what can be computed is.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "segslam/io/io_test_support.h"
+#include "segslam/io/trajectory_io.h"
+#include "segslam/io/tum_dataset.h"
+#include "segslam/testing/test_support.h"
+
+namespace segslam::system {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string inQuotes(const fs::path& path) { return "'" + path.string() + "'"; }
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs `segslam <arguments>`, capturing stdout and stderr in files of `temp`.
+CommandResult runSegslam(const std::string& arguments, const fs::path& temp) {
+  const auto out = temp / "stdout.txt";
+  const auto err = temp / "stderr.txt";
+  const std::string command =
+      inQuotes(SEGSLAM_CLI_PATH) + " " + arguments + " > " + inQuotes(out) + " 2> " + inQuotes(err);
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, segslam::testing::fileContents(out),
+          segslam::testing::fileContents(err)};
+}
+
+class CommandsCli : public ::testing::Test {
+ protected:
+  CommandsCli() {
+    io::testing::writeTinyDataset(dataset_);
+    std::ofstream(file_) << "a file, not a folder";
+  }
+
+  // Expects `arguments` to fail with exactly one error line, `error`, as its last output.
+  void expectError(const std::string& arguments, const std::string& error) {
+    const auto result = runSegslam(arguments, temp_.path());
+    EXPECT_EQ(result.exit_code, 1) << arguments;
+    const std::string line = "error: " + error + "\n";
+    EXPECT_TRUE(result.err.ends_with(line)) << arguments << "\n" << result.err;
+    EXPECT_EQ(result.err.find("error:"), result.err.size() - line.size()) << result.err;
+  }
+
+  segslam::testing::ScopedTempDir temp_;
+  fs::path dataset_ = temp_.path() / "tiny";
+  fs::path file_ = temp_.path() / "file.txt";
+};
+
+TEST_F(CommandsCli, AnOutputFolderThatCannotBeCreatedIsNamedByEveryCommand) {
+  const fs::path out = file_ / "out";
+  const std::string not_created =
+      "cannot create output folder " + out.string() + ": Not a directory";
+  const std::string data = " --dataset " + inQuotes(dataset_) + " --out " + inQuotes(out);
+  expectError("run" + data + " --seg none", not_created);
+  expectError("check" + data, not_created);
+  expectError("eval masks" + data + " --seg oracle", not_created);
+  expectError("eval loops" + data, not_created);
+  expectError("synth --out " + inQuotes(out), not_created);
+  expectError(
+      "vocab train --images " + inQuotes(dataset_ / "rgb") + " --out " + inQuotes(out / "v.voc"),
+      not_created);
+  const std::string trajectories = "eval --gt " + inQuotes(dataset_ / "groundtruth.txt") +
+                                   " --est " + inQuotes(dataset_ / "groundtruth.txt");
+  expectError(trajectories + " --plots " + inQuotes(out), not_created);
+  expectError(trajectories + " --json " + inQuotes(out / "e.json"), not_created);
+  expectError(trajectories + " --aligned-out " + inQuotes(out / "a.txt"), not_created);
+
+  const fs::path run = temp_.path() / "run";
+  fs::create_directories(run);
+  std::ofstream(run / "map") << "in the way";
+  expectError("map --run " + inQuotes(run) + " --dataset " + inQuotes(dataset_),
+              "cannot create output folder " + (run / "map").string() +
+                  ": a file of that name is in the way");
+}
+
+TEST_F(CommandsCli, CheckCountsAFrameWithADamagedImage) {
+  const auto frames = io::TumDataset::open(dataset_).frames();
+  const auto jpeg = io::testing::replaceByTruncatedJpeg(dataset_, frames[2].rgb_path);
+  const fs::path out = temp_.path() / "check";
+  const auto result =
+      runSegslam("check --dataset " + inQuotes(dataset_) + " --out " + inQuotes(out), temp_.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("  damaged       1 frames skipped for damaged images"),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.err.find("skipped: " + jpeg.string() + ": damaged image: the JPEG data stops"),
+            std::string::npos)
+      << result.err;
+  const auto json =
+      nlohmann::json::parse(segslam::testing::fileContents(out / "dataset_check.json"));
+  EXPECT_EQ(json["frames"], 4);
+  EXPECT_EQ(json["skipped_frames"], 1);
+
+  const auto first = io::testing::replaceByTruncatedJpeg(dataset_, frames[0].rgb_path);
+  io::testing::replaceByTruncatedJpeg(dataset_, frames[1].rgb_path);
+  expectError("check --dataset " + inQuotes(dataset_) + " --out " + inQuotes(out),
+              dataset_.string() +
+                  ": more than half of the 4 frames have damaged images (3 so far; the first: " +
+                  first.string() +
+                  ": damaged image: the JPEG data stops before its end marker (FF D9): the file "
+                  "is truncated)");
+}
+
+TEST_F(CommandsCli, EvalReportsTheAteWhenOnlyTheRpeIsImpossible) {
+  const fs::path est = temp_.path() / "est.txt";
+  io::writeTumTrajectory(est, io::readTumTrajectory(dataset_ / "groundtruth.txt"));
+  const auto result =
+      runSegslam("eval --gt " + inQuotes(dataset_ / "groundtruth.txt") + " --est " + inQuotes(est),
+                 temp_.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("ATE (SE3, 4 pairs)"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("not computed: the estimate spans 0.100 s (4 poses) and has 0 pose "
+                            "pair(s) 1 s apart"),
+            std::string::npos)
+      << result.out;
+}
+
+// The run: `segslam run --dataset tum_fr1_xyz_300 --max-frames 20` tracked every frame,
+// then failed on the RPE and wrote no summary.json.
+TEST_F(CommandsCli, TwentyRealFramesRunAndReportTheRpeAsNotComputed) {
+  SEGSLAM_REQUIRE_SHARED(sequence, "tum_fr1_xyz_300");
+  const fs::path out = temp_.path() / "run";
+  const auto result = runSegslam("run --dataset " + inQuotes(sequence) +
+                                     " --max-frames 20 --seg none --no-map --out " + inQuotes(out),
+                                 temp_.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("  ATE        rmse "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("  RPE (1 s)  not computed: the estimate spans "), std::string::npos)
+      << result.out;
+  const auto summary = nlohmann::json::parse(segslam::testing::fileContents(out / "summary.json"));
+  EXPECT_EQ(summary["frames"], 20);
+  EXPECT_EQ(summary["skipped_frames"], 0);
+  EXPECT_TRUE(summary["ate_rmse_m"].is_number());
+  EXPECT_TRUE(summary["rpe_translational_rmse_m"].is_null());
+  EXPECT_TRUE(summary["rpe_not_computed"].is_string());
+}
+
+}  // namespace
+}  // namespace segslam::system
