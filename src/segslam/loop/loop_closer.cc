@@ -188,6 +188,7 @@ std::vector<std::uint64_t> LoopCloser::confirmedCandidates(map::KeyFrame& keyfra
   for (std::uint64_t id : detector_->candidates(keyframe, covisible, options_.max_candidates)) {
     const auto it = keyframes_by_id_.find(id);
     if (it == keyframes_by_id_.end() || it->second->bad) continue;
+    if (id + options_.min_keyframes_back > keyframe.id) continue;
     CandidateGroup group{id, {id}};
     for (const map::KeyFrame* k : it->second->covisiblesWithWeight(0))
       group.keyframes.insert(k->id);

@@ -26,6 +26,10 @@ struct LoopClosingOptions {
   std::uint64_t min_keyframes = 5;  // keyframes made (culled ones too) before loops are sought
   std::uint64_t keyframes_after_loop = 10;  // keyframes skipped after a correction
   std::size_t max_candidates = 3;           // per query keyframe, from the detector
+  // A candidate made fewer keyframes before the query is the same stretch of path, not a loop,
+  // even when they share no point (a person hid their common view, or tracking was recovered
+  // between them): "closing" it bends the map without reducing drift.
+  std::uint64_t min_keyframes_back = 10;
   // Consecutive query keyframes that must propose the same place (see ConsistencyCheck). 1: a
   // revisited place is often verified by a single keyframe (the end of a lap overlaps its start
   // for a few keyframes only); the strict geometric verification is what keeps false loops out.

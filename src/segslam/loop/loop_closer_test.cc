@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "segslam/io/tum_dataset.h"
+#include "segslam/mapping/mapping_test_scene.h"
 #include "segslam/synth/generator.h"
 #include "segslam/system/sequence_runner.h"
 #include "segslam/testing/synth_sequences.h"
@@ -20,6 +21,45 @@ namespace {
 using testing::ScopedTempDir;
 
 constexpr double kAteWithoutLoopClosing = 0.0142;
+
+// Proposes every keyframe it was given that is not covisible with the query, oldest first: a
+// detector fooled by a view that hardly changed, or by the only other keyframe in sight.
+class EveryKeyFrameDetector : public LoopCandidateDetector {
+ public:
+  [[nodiscard]] std::string name() const override { return "every"; }
+  void add(const map::KeyFrame& keyframe) override { ids_.push_back(keyframe.id); }
+  [[nodiscard]] std::vector<std::uint64_t> candidates(const map::KeyFrame& /*query*/,
+                                                      const std::set<std::uint64_t>& covisible,
+                                                      std::size_t max_candidates) const override {
+    std::vector<std::uint64_t> found;
+    for (const std::uint64_t id : ids_) {
+      if (found.size() < max_candidates && !covisible.contains(id)) found.push_back(id);
+    }
+    return found;
+  }
+
+ private:
+  std::vector<std::uint64_t> ids_;
+};
+
+TEST(LoopCloser, KeyFramesMadeJustBeforeTheQueryAreNoLoop) {
+  map::Map map;
+  mapping::LocalMapper mapper(map);
+  LoopClosingOptions options;
+  options.min_keyframes = 0;
+  options.min_keyframes_back = 10;
+  LoopCloser closer(map, mapper, std::make_unique<EveryKeyFrameDetector>(), options);
+  for (std::uint64_t frame = 0; frame < 10; ++frame) {
+    closer.insertKeyFrame(map.createKeyFrame(mapping::testing::rowFrame(frame)));
+  }
+  closer.processQueued();
+  EXPECT_EQ(closer.stats().consistent_candidates, 0) << "each candidate is under 10 keyframes back";
+  const auto query = map.createKeyFrame(mapping::testing::rowFrame(10));
+  ASSERT_EQ(query->id, 10u);
+  closer.insertKeyFrame(query);
+  closer.processQueued();
+  EXPECT_EQ(closer.stats().consistent_candidates, 1) << "keyframe 0 is 10 keyframes back";
+}
 
 TEST(LoopCloser, ClosingTheLapReducesTheDrift) {
   const ScopedTempDir dir;
