@@ -5,27 +5,13 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "segslam/dense/dense_test_scene.h"
 #include "segslam/segmentation/semantic_class_map.h"
 
 namespace segslam::dense {
 namespace {
 
-core::Camera builderCamera() {
-  core::Camera camera;
-  camera.width = 32;
-  camera.height = 24;
-  camera.fx = camera.fy = 40.0;
-  camera.cx = 15.5;
-  camera.cy = 11.5;
-  return camera;
-}
-
-KeyFrameImages flatView(const core::Camera& camera, float depth, std::uint8_t grey) {
-  KeyFrameImages images;
-  images.bgr = cv::Mat(camera.height, camera.width, CV_8UC3, cv::Scalar::all(grey));
-  images.depth = cv::Mat(camera.height, camera.width, CV_32FC1, cv::Scalar(depth));
-  return images;
-}
+using test_scene::flatView;
 
 MapBuilderOptions testOptions() {
   MapBuilderOptions options;
@@ -41,7 +27,7 @@ geometry::Pose translation(double x, double y, double z) {
 }
 
 TEST(MapBuilder, TwoKeyFramesArePlacedByTheirPoses) {
-  const auto camera = builderCamera();
+  const auto camera = test_scene::smallCamera();
   MapBuilder builder(camera, testOptions());
   builder.addKeyFrame(0, 1.0, flatView(camera, 1.0f, 50));
   builder.addKeyFrame(1, 2.0, flatView(camera, 1.0f, 200));
@@ -72,7 +58,7 @@ TEST(MapBuilder, TwoKeyFramesArePlacedByTheirPoses) {
 }
 
 TEST(MapBuilder, KeyFramesWithoutPoseAreLeftOutAndRebuildsFollowNewPoses) {
-  const auto camera = builderCamera();
+  const auto camera = test_scene::smallCamera();
   MapBuilder builder(camera, testOptions());
   builder.addKeyFrame(0, 1.0, flatView(camera, 1.0f, 50));
   builder.addKeyFrame(1, 2.0, flatView(camera, 1.0f, 200));
@@ -91,7 +77,7 @@ TEST(MapBuilder, KeyFramesWithoutPoseAreLeftOutAndRebuildsFollowNewPoses) {
 // A 3 x 3 patch far behind a wall: its centre pixel is no depth edge (its neighbours agree), so
 // only the statistical outlier removal can keep it out of the map.
 TEST(MapBuilder, IsolatedPointsAreCleanedFromTheMap) {
-  const auto camera = builderCamera();
+  const auto camera = test_scene::smallCamera();
   MapBuilderOptions options = testOptions();
   options.cleaning.outlier_neighbours = 8;
   MapBuilder builder(camera, options);
@@ -157,7 +143,7 @@ TEST(MapBuilder, NetworkLabelsGiveObjectsAndPeopleGoToTheDynamicLayer) {
 }
 
 TEST(MapBuilder, BadImagesSurfaceAsErrors) {
-  const auto camera = builderCamera();
+  const auto camera = test_scene::smallCamera();
   MapBuilder builder(camera, testOptions());
   auto images = flatView(camera, 1.0f, 50);
   images.bgr = cv::Mat(3, 3, CV_8UC3);

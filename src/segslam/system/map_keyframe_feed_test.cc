@@ -2,23 +2,16 @@
 
 #include <gtest/gtest.h>
 
+#include "segslam/dense/dense_test_scene.h"
+
 namespace segslam::system {
 namespace {
 
-core::Camera smallCamera() {
-  core::Camera camera;
-  camera.width = 32;
-  camera.height = 24;
-  camera.fx = camera.fy = 40.0;
-  camera.cx = 15.5;
-  camera.cy = 11.5;
-  return camera;
-}
+using dense::test_scene::smallCamera;
 
+// A grey wall 1 m away, with a mask that marks nothing.
 dense::KeyFrameImages flatWall(const core::Camera& camera) {
-  dense::KeyFrameImages images;
-  images.bgr = cv::Mat(camera.height, camera.width, CV_8UC3, cv::Scalar::all(128));
-  images.depth = cv::Mat(camera.height, camera.width, CV_32FC1, cv::Scalar(1.0f));
+  dense::KeyFrameImages images = dense::test_scene::flatView(camera, 1.0f, 128);
   images.dynamic_mask = cv::Mat::zeros(camera.height, camera.width, CV_8UC1);
   return images;
 }
