@@ -110,12 +110,17 @@ Segment countingSegment() {
   };
 }
 
-TEST(MaskStream, SynchronousLatencyDeliversOutputsLateAndReportsThem) {
+// Synchronous, the network on every 4th frame, its outputs `latency_frames` frames late.
+MaskStreamOptions everyFourthFrame(int latency_frames) {
   MaskStreamOptions options;
   options.synchronous = true;
   options.interval = 4;
-  options.latency_frames = 2;
-  MaskStream stream(countingSegment(), options);
+  options.latency_frames = latency_frames;
+  return options;
+}
+
+TEST(MaskStream, SynchronousLatencyDeliversOutputsLateAndReportsThem) {
+  MaskStream stream(countingSegment(), everyFourthFrame(2));
   const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
   std::vector<std::uint64_t> late_frames;
   for (std::uint64_t frame = 0; frame < 10; ++frame) {
@@ -151,11 +156,7 @@ std::vector<std::pair<std::uint64_t, std::uint64_t>> keyFrameOutputs(MaskStream&
 }
 
 TEST(MaskStream, SynchronousKeyFrameOutputComesBackOnceAfterTheLatency) {
-  MaskStreamOptions options;
-  options.synchronous = true;
-  options.interval = 4;
-  options.latency_frames = 2;
-  MaskStream stream(countingSegment(), options);
+  MaskStream stream(countingSegment(), everyFourthFrame(2));
   const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
   ASSERT_TRUE(keyFrameOutputs(stream, 0, 6, bgr).empty());
   stream.segmentKeyFrame(5, bgr, cv::Mat());  // frame 5 is handed on; the network was not due
@@ -167,10 +168,7 @@ TEST(MaskStream, SynchronousKeyFrameOutputComesBackOnceAfterTheLatency) {
 }
 
 TEST(MaskStream, AKeyFrameWhoseOutputIsThereAlreadyIsNotSegmentedAgain) {
-  MaskStreamOptions options;
-  options.synchronous = true;
-  options.interval = 4;
-  MaskStream stream(countingSegment(), options);
+  MaskStream stream(countingSegment(), everyFourthFrame(0));
   const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
   static_cast<void>(keyFrameOutputs(stream, 0, 5, bgr));  // runs on frames 0 and 4
   stream.segmentKeyFrame(4, bgr, cv::Mat());
