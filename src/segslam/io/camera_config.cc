@@ -165,7 +165,7 @@ core::Camera parseCameraYaml(std::string_view text, const std::filesystem::path&
   return camera;
 }
 
-core::Camera readCalibrationTxt(const std::filesystem::path& file, cv::Size image_size) {
+core::Camera readCalibrationTxt(const std::filesystem::path& file, int width, int height) {
   constexpr std::string_view kFormat = "fx fy cx cy";
   const auto rows = util::readTextRows(file);
   if (rows.size() != 1) {
@@ -176,8 +176,8 @@ core::Camera readCalibrationTxt(const std::filesystem::path& file, cv::Size imag
   util::requireFieldCount(row, 4, file, kFormat);
   core::Camera camera;
   camera.name = "calibration.txt";
-  camera.width = image_size.width;
-  camera.height = image_size.height;
+  camera.width = width;
+  camera.height = height;
   camera.fx = util::parseDouble(row.fields[0], file, row.line, "fx");
   camera.fy = util::parseDouble(row.fields[1], file, row.line, "fy");
   camera.cx = util::parseDouble(row.fields[2], file, row.line, "cx");

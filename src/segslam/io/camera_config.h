@@ -1,7 +1,6 @@
 #pragma once
 
 #include <filesystem>
-#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -40,9 +39,10 @@ core::Camera readCameraYaml(const std::filesystem::path& file);
 core::Camera parseCameraYaml(std::string_view text, const std::filesystem::path& name);
 
 // Reads an ETH3D SLAM benchmark calibration.txt: one line `fx fy cx cy` of the undistorted
-// colour images, which are `image_size`; depth is in 1/5000 m as in TUM, the rate 30 Hz (playback
-// follows the timestamps). Throws util::Error naming the file (and line) when it is not that.
-core::Camera readCalibrationTxt(const std::filesystem::path& file, cv::Size image_size);
+// colour images, which are `width` x `height` pixels; depth is in 1/5000 m as in TUM, the rate 30
+// Hz (playback follows the timestamps). Throws util::Error naming the file (and line) when it is
+// not that.
+core::Camera readCalibrationTxt(const std::filesystem::path& file, int width, int height);
 
 void writeCameraYaml(const std::filesystem::path& file, const core::Camera& camera);
 

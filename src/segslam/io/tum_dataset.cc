@@ -187,7 +187,8 @@ CameraChoice chooseCamera(const fs::path& folder, const DatasetOptions& options,
   }
   const fs::path calibration = folder / "calibration.txt";
   if (pathExists(calibration)) {
-    return {readCalibrationTxt(calibration, readImageSize(frames.front().rgb_path)),
+    const cv::Size size = readImageSize(frames.front().rgb_path);
+    return {readCalibrationTxt(calibration, size.width, size.height),
             "file " + calibration.string() + " (ETH3D calibration in the dataset folder)"};
   }
   if (const auto preset = presetNameForDataset(folder)) {
