@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Measures the dense map against the targets of the map issue.
 #
-#   bench/map_quality.sh [--build DIR] [--out DIR] [--runs N] [--part all|quality|cost|objects]
+#   bench/map_quality.sh [--build DIR] [--out DIR] [--runs N] [--part all|quality|cost]
 #
 # - quality (bench/results/maps.md, maps.json): `segslam run --fast` (threaded) on a
 #   rendered synthetic sequence with two walking people and on tum_fr1_xyz_300_walker, each with
@@ -14,9 +14,7 @@
 #   with the map and N times with --no-map (alternating, default 3 each): process wall and CPU
 #   time, peak RSS, medians (played fast), the machine's load average around each run, and where the map's
 #   time goes.
-# - objects (bench/results/map_objects.md, map_objects.json): `segslam run --seg semantic
-#   --deterministic` on tum_fr1_xyz_300 and the walker: the objects the network's labels give, and
-#   how much of the walker's path is left in the static map.
+# The objects of the map: bench/object_map.sh.
 # Needs ../shared beside the project (or SEGSLAM_SHARED_DIR).
 set -euo pipefail
 
@@ -39,7 +37,7 @@ mkdir -p "$out" "$root/bench/results"
 walker="$shared/data/tum_fr1_xyz_300_walker"
 cpu_name="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 
-# Runs segslam and appends {configuration, seconds, load, summary, evaluation, objects} to
+# Runs segslam and appends {configuration, seconds, load, summary, evaluation} to
 # $results.
 measure() {  # name, dataset, masks, eval dataset ("" = none), extra run options...
   local name="$1" dataset="$2" masks="$3" eval_dataset="$4"; shift 4
@@ -64,10 +62,6 @@ name, run_dir, timing = sys.argv[1], sys.argv[2], json.load(open(sys.argv[3]))
 row = {"configuration": name, "process_seconds": timing["wall"], "cpu_seconds": timing["cpu"],
        "load_average_1min": timing["load"],
        "summary": json.load(open(os.path.join(run_dir, "summary.json")))}
-objects = os.path.join(run_dir, "map", "objects.json")
-if os.path.exists(objects):
-    row["objects"] = [{k: o[k] for k in ("id", "label", "dynamic", "points", "centroid")}
-                      for o in json.load(open(objects))["objects"]]
 evaluation = os.path.join(run_dir, "map_evaluation.json")
 if os.path.exists(evaluation):
     row["evaluation"] = json.load(open(evaluation))
@@ -171,47 +165,9 @@ print(table)
 PY
 }
 
-objects() {
-  results="$out/objects.jsonl"
-  : > "$results"
-  measure "fr1_xyz_300 semantic" "$shared/data/tum_fr1_xyz_300" semantic "" --deterministic
-  measure "walker semantic" "$walker" semantic "$walker" --deterministic
-  python3 - "$results" "$root/bench/results" <<'PY'
-import json, os, sys
-rows = [json.loads(line) for line in open(sys.argv[1])]
-out_dir = sys.argv[2]
-lines = [
-    "# Objects from the network's labels",
-    "",
-    "`bench/map_quality.sh --part objects`: `segslam run --seg semantic --deterministic` (ESPNetv2 "
-    "Pascal VOC, voxel 1 cm); the objects of `map/objects.json`.",
-]
-for row in rows:
-    m = row["summary"]["map"]
-    lines += ["", f"## {row['configuration']}", "",
-              f"{m['static_points']} static and {m['dynamic_points']} dynamic points from "
-              f"{m['keyframes']} keyframes; network ran on {row['summary'].get('network_runs', 0)} frames.",
-              ""]
-    if "evaluation" in row:
-        e = row["evaluation"]
-        share = e.get("near_person_path_share")
-        lines += [f"Static map: {100 * e['on_dynamic_share']:.2f} % of its points on the person "
-                  f"(3 cm), {100 * share:.2f} % within 0.3 m of the person's path.", ""]
-    lines += ["| object | layer | points | centroid [m] |", "| --- | --- | --- | --- |"]
-    for o in row.get("objects", []):
-        c = ", ".join(f"{v:.2f}" for v in o["centroid"])
-        lines.append(f"| {o['id']} | {'dynamic' if o['dynamic'] else 'static'} | {o['points']} | {c} |")
-table = "\n".join(lines) + "\n"
-open(os.path.join(out_dir, "map_objects.md"), "w").write(table)
-json.dump(rows, open(os.path.join(out_dir, "map_objects.json"), "w"), indent=1)
-print(table)
-PY
-}
-
 case "$part" in
   quality) quality ;;
   cost) cost ;;
-  objects) objects ;;
-  all) quality; cost; objects ;;
-  *) echo "map_quality.sh: unknown part '$part' (all, quality, cost, objects)" >&2; exit 2 ;;
+  all) quality; cost ;;
+  *) echo "map_quality.sh: unknown part '$part' (all, quality, cost)" >&2; exit 2 ;;
 esac

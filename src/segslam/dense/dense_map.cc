@@ -15,15 +15,24 @@ namespace {
 
 nlohmann::json vectorJson(const Eigen::Vector3f& v) { return {v.x(), v.y(), v.z()}; }
 
+nlohmann::json boxJson(const OrientedBox& box) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back({box.axes(r, 0), box.axes(r, 1), box.axes(r, 2)});
+  return {{"centre", vectorJson(box.centre)}, {"extent", vectorJson(box.extent)}, {"axes", rows}};
+}
+
 nlohmann::json objectJson(const MapObject& object, const std::string& file) {
   return {{"id", object.id},
           {"label", object.label},
           {"instance", object.instance},
           {"dynamic", object.dynamic},
+          {"confidence", object.confidence},
+          {"keyframes", object.keyframes},
           {"points", object.points.size()},
           {"centroid", vectorJson(object.centroid)},
           {"bbox_min", vectorJson(object.bbox_min)},
           {"bbox_max", vectorJson(object.bbox_max)},
+          {"oriented_box", boxJson(object.box)},
           {"file", file}};
 }
 

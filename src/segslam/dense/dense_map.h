@@ -29,8 +29,9 @@ struct CloudCleaningOptions {
 LabelledCloud removeOutliers(const LabelledCloud& cloud, const CloudCleaningOptions& options);
 
 // Writes the map folder: static.ply, dynamic.ply (present even without points), objects.json
-// ({"voxel_size", "objects": [{"id", "label", "instance", "dynamic", "points", "centroid",
-// "bbox_min", "bbox_max", "file"}]}) and objects/<id>.ply. Earlier object files are removed
+// ({"voxel_size", "objects": [{"id", "label", "instance", "dynamic", "confidence", "keyframes",
+// "points", "centroid", "bbox_min", "bbox_max", "oriented_box": {"centre", "extent", "axes"},
+// "file"}]}, documented in docs/usage.md) and objects/<id>.ply. Earlier object files are removed
 // first so that the folder holds exactly this map. Throws util::Error naming a file that cannot
 // be written.
 void writeDenseMap(const DenseMap& map, const std::filesystem::path& folder);

@@ -1,24 +1,15 @@
 #include "segslam/dense/labelled_cloud.h"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
 
+#include "segslam/dense/voxel_key.h"
+
 namespace segslam::dense {
 
 namespace {
-
-// Voxel coordinates packed into one integer, 21 bits per axis (+-10 km at 1 cm).
-std::uint64_t voxelKey(const Eigen::Vector3f& point, double voxel_size) {
-  std::uint64_t key = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    const auto cell = static_cast<std::int64_t>(std::floor(point[axis] / voxel_size));
-    key = (key << 21) | (static_cast<std::uint64_t>(cell + (1 << 20)) & ((1u << 21) - 1));
-  }
-  return key;
-}
 
 struct SortEntry {
   std::uint64_t voxel;

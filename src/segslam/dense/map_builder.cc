@@ -10,10 +10,13 @@
 namespace segslam::dense {
 
 MapBuilder::MapBuilder(const core::Camera& camera, MapBuilderOptions options)
-    : maker_(camera, options.keyframe), options_(options), worker_([this] { work(); }) {
-  // Objects are only found when neighbouring voxels can be within the clustering distance.
-  options_.objects.cluster_distance =
-      std::max(options_.objects.cluster_distance, 3.0 * options_.keyframe.voxel_size);
+    : camera_(camera),
+      maker_(camera, options.keyframe),
+      options_(options),
+      worker_([this] { work(); }) {
+  // Views of one surface share cells only when a cell holds more than one voxel.
+  options_.objects.cell_size =
+      std::max(options_.objects.cell_size, 2.0 * options_.keyframe.voxel_size);
 }
 
 MapBuilder::~MapBuilder() {
@@ -78,15 +81,25 @@ void MapBuilder::makeFront(std::unique_lock<std::mutex>& lock) {
   timings_.keyframe_voxels += end - projected;
 }
 
-LabelledCloud MapBuilder::worldCloud(const core::Trajectory& keyframe_poses, bool dynamic) const {
-  LabelledCloud world;
+MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe_poses,
+                                                ObjectMapBuilder& objects) const {
+  WorldClouds world;
   for (const auto& pose : keyframe_poses.poses()) {
     const auto it = clouds_.lower_bound(pose.timestamp - 1e-4);
     if (it == clouds_.end() || it->first > pose.timestamp + 1e-4) continue;
     const KeyFrameCloud& cloud = it->second.cloud;
-    world.append(transformed(dynamic ? cloud.dynamic_points : cloud.static_points, pose.T_wc));
+    const LabelledCloud static_points = transformed(cloud.static_points, pose.T_wc);
+    const LabelledCloud dynamic_points = transformed(cloud.dynamic_points, pose.T_wc);
+    const auto start = std::chrono::steady_clock::now();
+    objects.addKeyFrame(it->second.id, pose.timestamp, pose.T_wc, static_points, dynamic_points);
+    world.object_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    world.static_points.append(static_points);
+    world.dynamic_points.append(dynamic_points);
   }
-  return voxelDownsample(world, options_.keyframe.voxel_size);
+  const double voxel = options_.keyframe.voxel_size;
+  return {voxelDownsample(world.static_points, voxel), voxelDownsample(world.dynamic_points, voxel),
+          world.object_seconds};
 }
 
 DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses) {
@@ -100,16 +113,16 @@ DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses) {
     seconds = std::chrono::duration<double>(now - start).count();
     start = now;
   };
-  LabelledCloud static_points = worldCloud(keyframe_poses, false);
-  map.dynamic_points = worldCloud(keyframe_poses, true);
+  ObjectMapBuilder objects(camera_, options_.keyframe.max_depth, options_.objects);
+  WorldClouds world = worldClouds(keyframe_poses, objects);
+  map.dynamic_points = std::move(world.dynamic_points);
   lap(timings_.merging);
-  map.static_points = removeOutliers(static_points, options_.cleaning);
+  map.static_points = removeOutliers(world.static_points, options_.cleaning);
   lap(timings_.outlier_removal);
-  map.objects = clusterObjects(map.static_points, options_.objects);
-  auto dynamic_objects = dynamicObjects(map.dynamic_points, options_.objects);
-  numberAfter(map.objects, dynamic_objects);
-  std::move(dynamic_objects.begin(), dynamic_objects.end(), std::back_inserter(map.objects));
+  map.objects = objects.objects(map.static_points, map.voxel_size);
   lap(timings_.objects);
+  timings_.merging -= world.object_seconds;
+  timings_.objects += world.object_seconds;
   spdlog::debug("dense map: merging {:.3f} s, outlier removal {:.3f} s, objects {:.3f} s",
                 timings_.merging, timings_.outlier_removal, timings_.objects);
   return map;

@@ -12,14 +12,14 @@
 #include "segslam/core/trajectory.h"
 #include "segslam/dense/dense_map.h"
 #include "segslam/dense/keyframe_cloud.h"
-#include "segslam/dense/object_map.h"
+#include "segslam/dense/object_map_builder.h"
 
 namespace segslam::dense {
 
 struct MapBuilderOptions {
   KeyFrameCloudOptions keyframe;  // its voxel_size is the map's
   CloudCleaningOptions cleaning;
-  ObjectMapOptions objects;  // the clustering distance is at least 3 voxels
+  ObjectMapOptions objects;  // its cell size is at least 2 voxels
   // Niceness of the map thread: tracking comes first, a keyframe cloud can wait.
   int thread_niceness = 10;
 };
@@ -55,7 +55,7 @@ class MapBuilder {
   // The world map: every keyframe cloud whose timestamp has a pose in `keyframe_poses`
   // (camera-to-world, matched within 1e-4 s) transformed into the world, merged, voxelised once
   // more and cleaned of outliers; keyframes without a pose (culled ones) are left out. Objects
-  // come from the labels. Waits for the queue first.
+  // come from the keyframes' labels (ObjectMapBuilder). Waits for the queue first.
   [[nodiscard]] DenseMap build(const core::Trajectory& keyframe_poses);
 
   [[nodiscard]] std::size_t numKeyFrames();
@@ -75,9 +75,17 @@ class MapBuilder {
   void work();
   // Makes the cloud of the queue's first keyframe, unlocking `lock` meanwhile.
   void makeFront(std::unique_lock<std::mutex>& lock);
-  [[nodiscard]] LabelledCloud worldCloud(const core::Trajectory& keyframe_poses,
-                                         bool dynamic) const;
+  struct WorldClouds {
+    LabelledCloud static_points;
+    LabelledCloud dynamic_points;
+    double object_seconds = 0.0;  // spent associating the keyframes' objects
+  };
+  // Both layers of every keyframe with a pose, in the world frame, voxelised together; each
+  // keyframe's are handed to `objects` on the way.
+  [[nodiscard]] WorldClouds worldClouds(const core::Trajectory& keyframe_poses,
+                                        ObjectMapBuilder& objects) const;
 
+  core::Camera camera_;
   KeyFrameCloudMaker maker_;
   MapBuilderOptions options_;
   std::mutex mutex_;

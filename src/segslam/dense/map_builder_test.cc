@@ -122,9 +122,11 @@ TEST(MapBuilder, NetworkLabelsGiveObjectsAndPeopleGoToTheDynamicLayer) {
   auto options = testOptions();
   options.objects.min_points = 50;
   MapBuilder builder(camera, options);
-  builder.addKeyFrame(0, 1.0, images);
   core::Trajectory poses;
-  poses.append(1.0, translation(0.0, 0.0, 0.0));
+  for (int k = 0; k < 3; ++k) {  // an object must be seen by three keyframes
+    builder.addKeyFrame(static_cast<std::uint64_t>(k), 1.0 + k, images);
+    poses.append(1.0 + k, translation(0.0, 0.0, 0.0));
+  }
   const DenseMap map = builder.build(poses);
 
   ASSERT_EQ(map.objects.size(), 2u);

@@ -2,76 +2,52 @@
 
 #include <gtest/gtest.h>
 
-#include "segslam/core/semantic_class.h"
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "segslam/dense/object_test_clouds.h"
 
 namespace segslam::dense {
 namespace {
 
-// The surface of an axis-aligned box sampled on a 1 cm grid.
-void addBox(LabelledCloud& cloud, const Eigen::Vector3f& min, const Eigen::Vector3f& max,
-            core::SemanticClass label, std::uint16_t instance = 0) {
-  const Eigen::Vector3i cells = ((max - min) / 0.01f).array().round().cast<int>();
-  for (int i = 0; i <= cells.x(); ++i) {
-    for (int j = 0; j <= cells.y(); ++j) {
-      for (int k = 0; k <= cells.z(); ++k) {
-        const bool on_surface =
-            i == 0 || j == 0 || k == 0 || i == cells.x() || j == cells.y() || k == cells.z();
-        if (!on_surface) continue;
-        const Eigen::Vector3f offset = 0.01f * Eigen::Vector3f(i, j, k);
-        cloud.add(i == cells.x() && j == cells.y() && k == cells.z() ? max : min + offset,
-                  {1, 2, 3}, static_cast<std::uint8_t>(label), instance);
-      }
-    }
-  }
+using core::SemanticClass;
+
+MapObject objectOf(const std::string& label, std::size_t points, bool dynamic = false) {
+  MapObject object;
+  object.label = label;
+  object.dynamic = dynamic;
+  for (std::size_t i = 0; i < points; ++i) object.points.add(Eigen::Vector3f::Zero(), {0, 0, 0});
+  return object;
 }
 
-TEST(ObjectMap, TwoSeparatedBoxesAreTwoInstancesWithTheirBoxes) {
-  LabelledCloud cloud;
-  addBox(cloud, {0.0f, 0.0f, 0.0f}, {0.4f, 0.3f, 0.2f}, core::SemanticClass::kBox);
-  addBox(cloud, {1.0f, 0.0f, 0.0f}, {1.2f, 0.2f, 0.2f}, core::SemanticClass::kBox);
-  addBox(cloud, {3.0f, 0.0f, 0.0f}, {3.2f, 0.2f, 0.2f}, core::SemanticClass::kChair);
-  const auto objects = clusterObjects(cloud, {});
-  ASSERT_EQ(objects.size(), 3u);
-  // Labels in class-id order (chair = 5 before box = 7), the largest object of a label first.
+TEST(ObjectMap, ObjectsAreNumberedPerLabelStaticFirstLargestFirst) {
+  std::vector<MapObject> objects = {objectOf("person", 50, true), objectOf("box", 10),
+                                    objectOf("person", 20), objectOf("box", 30),
+                                    objectOf("chair", 5)};
+  numberObjects(objects);
   std::vector<std::string> ids;
   for (const auto& object : objects) ids.push_back(object.id);
-  EXPECT_EQ(ids, (std::vector<std::string>{"chair_1", "box_1", "box_2"}));
-  const MapObject& big = objects[1];
-  EXPECT_EQ(big.label, "box");
-  EXPECT_EQ(big.instance, 1);
-  EXPECT_FALSE(big.dynamic);
-  EXPECT_TRUE(big.bbox_min.isApprox(Eigen::Vector3f(0.0f, 0.0f, 0.0f), 1e-4f));
-  EXPECT_TRUE(big.bbox_max.isApprox(Eigen::Vector3f(0.4f, 0.3f, 0.2f), 1e-4f));
-  EXPECT_NEAR(big.centroid.x(), 0.2f, 1e-3f);
-  const MapObject& small = objects[2];
-  EXPECT_TRUE(small.bbox_min.isApprox(Eigen::Vector3f(1.0f, 0.0f, 0.0f), 1e-4f));
-  EXPECT_TRUE(small.bbox_max.isApprox(Eigen::Vector3f(1.2f, 0.2f, 0.2f), 1e-4f));
-  EXPECT_EQ(big.points.size() + small.points.size() + objects[0].points.size(), cloud.size());
+  // Label ids: chair 5, box 7, person 8.
+  EXPECT_EQ(ids, (std::vector<std::string>{"chair_1", "box_1", "box_2", "person_1", "person_2"}));
+  EXPECT_EQ(objects[1].points.size(), 30u);
+  EXPECT_TRUE(objects[4].dynamic);
 }
 
-TEST(ObjectMap, UnlabelledPointsAndSmallFragmentsAreNoObjects) {
-  LabelledCloud cloud;
-  addBox(cloud, {0.0f, 0.0f, 0.0f}, {0.3f, 0.3f, 0.3f}, core::SemanticClass::kNone);
-  addBox(cloud, {1.0f, 0.0f, 0.0f}, {1.02f, 0.02f, 0.02f}, core::SemanticClass::kBox);
-  EXPECT_TRUE(clusterObjects(cloud, {}).empty());
-}
-
-TEST(ObjectMap, DynamicObjectsFollowInstanceIdsAndNumberAfterStaticOnes) {
-  LabelledCloud people;
-  addBox(people, {0.0f, 0.0f, 0.0f}, {0.3f, 0.3f, 0.3f}, core::SemanticClass::kPerson, 4);
-  addBox(people, {2.0f, 0.0f, 0.0f}, {2.3f, 0.3f, 0.3f}, core::SemanticClass::kPerson, 4);
-  addBox(people, {5.0f, 0.0f, 0.0f}, {5.2f, 0.2f, 0.2f}, core::SemanticClass::kPerson, 9);
-  auto dynamic = dynamicObjects(people, {});
-  ASSERT_EQ(dynamic.size(), 2u);  // instance 4 walked: still one object
-  EXPECT_TRUE(dynamic[0].dynamic);
-  EXPECT_TRUE(dynamic[0].bbox_max.isApprox(Eigen::Vector3f(2.3f, 0.3f, 0.3f), 1e-4f));
-  LabelledCloud statue;
-  addBox(statue, {9.0f, 0.0f, 0.0f}, {9.2f, 0.2f, 0.2f}, core::SemanticClass::kPerson);
-  const auto static_objects = clusterObjects(statue, {});
-  numberAfter(static_objects, dynamic);
-  EXPECT_EQ(static_objects[0].id, "person_1");
-  EXPECT_EQ(dynamic[0].id, "person_2");
-  EXPECT_EQ(dynamic[1].id, "person_3");
+TEST(ObjectMap, ExtentGivesBoundsAndABoxAlongTheObjectsAxes) {
+  MapObject object;
+  object.points = test_clouds::box({0.0f, 0.0f, 0.0f}, {0.6f, 0.2f, 0.1f}, SemanticClass::kBox);
+  const Eigen::Isometry3d turn(Eigen::AngleAxisd(M_PI / 6.0, Eigen::Vector3d::UnitZ()));
+  object.points = transformed(object.points, turn);
+  computeExtent(object);
+  EXPECT_TRUE(
+      object.centroid.isApprox((turn * Eigen::Vector3d(0.3, 0.1, 0.05)).cast<float>(), 1e-3f));
+  // The axis-aligned bounds grow with the turn, the oriented box keeps the box's size.
+  EXPECT_GT(object.bbox_max.y() - object.bbox_min.y(), 0.45f);
+  Eigen::Vector3f extent = object.box.extent;
+  std::sort(extent.data(), extent.data() + 3);
+  EXPECT_TRUE(extent.isApprox(Eigen::Vector3f(0.1f, 0.2f, 0.6f), 1e-3f)) << extent.transpose();
+  EXPECT_TRUE(object.box.centre.isApprox(object.centroid, 1e-2f));
+  EXPECT_NEAR(object.box.axes.determinant(), 1.0f, 1e-4f);
 }
 
 }  // namespace

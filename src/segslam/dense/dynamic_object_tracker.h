@@ -1,0 +1,70 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "segslam/dense/label_segments.h"
+#include "segslam/dense/labelled_cloud.h"
+
+namespace segslam::dense {
+
+struct DynamicTrackingOptions {
+  // Cells of the dynamic layer's segments (metres): coarser than the static objects', so that a
+  // person whose arm is cut off by a mask's edge stays one segment.
+  double cell_size = 0.05;
+  // A segment continues a track of its label when its centroid lies within
+  // max_speed * (time since the track was last seen) + slack of the track's last centroid.
+  double max_speed = 2.0;  // m/s: a walking person
+  double slack = 0.5;      // m: half a body, for a centroid that moves as the view changes
+  // A track not seen for longer ends; a person coming back later is a new object.
+  double max_gap = 5.0;  // s
+};
+
+// One moving object across the keyframes that saw it.
+struct DynamicTrack {
+  std::uint8_t label = 0;
+  std::uint16_t instance = 0;  // the segmentation's instance id, 0 = tracked here
+  std::vector<std::uint64_t> keyframes;
+  LabelledCloud points;             // world frame, every keyframe's segment
+  std::size_t keyframe_points = 0;  // dynamic points of the keyframes that saw it, all labels
+  Eigen::Vector3f last_centroid = Eigen::Vector3f::Zero();
+  double last_seen = 0.0;
+};
+
+// Follows the dynamic layer's objects over the keyframes, so that one walking person is one
+// object however far they walk. Segments with an instance id (a segmentation that tracks
+// instances, or a dataset's ground truth) follow that id; the others are linked to the track of
+// their label whose last centroid is nearest within reach, each track taking one segment per
+// keyframe; another segment whose bounds come within `slack` of a tracked one of the keyframe
+// (larger segments first) joins that track: a person split in two by a table edge.
+class DynamicObjectTracker {
+ public:
+  explicit DynamicObjectTracker(DynamicTrackingOptions options);
+
+  // Keyframes in time order; `segments` from segmentByLabel of `points` (world frame) with
+  // options().cell_size.
+  void addKeyFrame(std::uint64_t keyframe_id, double timestamp, const LabelledCloud& points,
+                   const std::vector<LabelSegment>& segments);
+
+  [[nodiscard]] const std::vector<DynamicTrack>& tracks() const { return tracks_; }
+  [[nodiscard]] const DynamicTrackingOptions& options() const { return options_; }
+
+ private:
+  // Index of the track each untracked segment continues, one segment per track (none:
+  // max size_t).
+  [[nodiscard]] std::vector<std::size_t> link(double timestamp,
+                                              const std::vector<LabelSegment>& segments) const;
+  // The track of a segment of this keyframe (`track_of`, tracks_.size() and beyond = none yet)
+  // whose bounds come within slack of `segment`'s; tracks_.size() when none does.
+  [[nodiscard]] std::size_t nearbyTrack(const std::vector<LabelSegment>& segments,
+                                        const std::vector<std::size_t>& track_of,
+                                        std::size_t segment) const;
+  void extend(std::size_t track, std::uint64_t keyframe_id, double timestamp,
+              const LabelledCloud& points, const LabelSegment& segment);
+
+  DynamicTrackingOptions options_;
+  std::vector<DynamicTrack> tracks_;
+};
+
+}  // namespace segslam::dense

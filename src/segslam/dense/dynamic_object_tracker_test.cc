@@ -1,0 +1,83 @@
+#include "segslam/dense/dynamic_object_tracker.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "segslam/dense/object_test_clouds.h"
+
+namespace segslam::dense {
+namespace {
+
+using core::SemanticClass;
+using test_clouds::addBox;
+
+// A person-sized box standing at (x, z) on the floor plane y = 0.
+void addPerson(LabelledCloud& cloud, float x, float z, std::uint16_t instance = 0) {
+  addBox(cloud, {x, -1.7f, z}, {x + 0.4f, 0.0f, z + 0.3f}, SemanticClass::kPerson, instance);
+}
+
+void track(DynamicObjectTracker& tracker, std::uint64_t keyframe, double time,
+           const LabelledCloud& cloud) {
+  tracker.addKeyFrame(keyframe, time, cloud,
+                      segmentByLabel(cloud, tracker.options().cell_size, 50));
+}
+
+TEST(DynamicObjectTracker, OneWalkingPersonIsOneTrack) {
+  DynamicObjectTracker tracker({});
+  // 1.2 m/s, keyframes half a second apart, the view cutting the person off now and then.
+  for (int k = 0; k < 10; ++k) {
+    LabelledCloud cloud;
+    addPerson(cloud, 0.6f * static_cast<float>(k), 2.0f);
+    track(tracker, static_cast<std::uint64_t>(k), 0.5 * k, cloud);
+  }
+  ASSERT_EQ(tracker.tracks().size(), 1u);
+  EXPECT_EQ(tracker.tracks()[0].keyframes.size(), 10u);
+  EXPECT_EQ(tracker.tracks()[0].instance, 0);
+}
+
+TEST(DynamicObjectTracker, TwoPeopleApartAreTwoTracksEvenWhenSplitBySomething) {
+  DynamicObjectTracker tracker({});
+  for (int k = 0; k < 6; ++k) {
+    const float step = 0.3f * static_cast<float>(k);
+    LabelledCloud cloud;
+    addPerson(cloud, step, 2.0f);
+    // The second person, 3 m further back, seen in two parts (a table hides their waist).
+    addBox(cloud, {3.0f - step, -1.7f, 5.0f}, {3.4f - step, -0.9f, 5.3f}, SemanticClass::kPerson);
+    addBox(cloud, {3.0f - step, -0.5f, 5.0f}, {3.4f - step, 0.0f, 5.3f}, SemanticClass::kPerson);
+    track(tracker, static_cast<std::uint64_t>(k), 0.5 * k, cloud);
+  }
+  ASSERT_EQ(tracker.tracks().size(), 2u);
+  EXPECT_EQ(tracker.tracks()[0].keyframes.size(), 6u);
+  EXPECT_EQ(tracker.tracks()[1].keyframes.size(), 6u);
+}
+
+TEST(DynamicObjectTracker, InstanceIdsAreFollowedAndALongAbsenceStartsANewTrack) {
+  DynamicObjectTracker tracker({});
+  LabelledCloud first;
+  addPerson(first, 0.0f, 2.0f, 7);
+  addPerson(first, 5.0f, 2.0f);
+  track(tracker, 0, 0.0, first);
+  LabelledCloud second;
+  addPerson(second, 2.0f, 2.0f, 7);  // far from where it was: the id still says who it is
+  addPerson(second, 5.0f, 2.0f);
+  track(tracker, 1, 0.2, second);
+  LabelledCloud much_later;
+  addPerson(much_later, 5.0f, 2.0f);
+  track(tracker, 2, 0.2 + 10.0, much_later);
+  const auto& tracks = tracker.tracks();
+  ASSERT_EQ(tracks.size(), 3u);
+  const auto seven = std::find_if(tracks.begin(), tracks.end(),
+                                  [](const DynamicTrack& t) { return t.instance == 7; });
+  ASSERT_NE(seven, tracks.end());
+  EXPECT_EQ(seven->keyframes.size(), 2u);
+  const auto untracked = std::find_if(tracks.begin(), tracks.end(), [](const DynamicTrack& t) {
+    return t.instance == 0 && t.keyframes.front() == 0;
+  });
+  ASSERT_NE(untracked, tracks.end());
+  EXPECT_EQ(untracked->keyframes.size(), 2u);
+  EXPECT_EQ(tracks.back().keyframes, (std::vector<std::uint64_t>{2}));
+}
+
+}  // namespace
+}  // namespace segslam::dense

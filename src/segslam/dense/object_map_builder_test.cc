@@ -1,0 +1,107 @@
+#include "segslam/dense/object_map_builder.h"
+
+#include <gtest/gtest.h>
+
+#include "segslam/dense/object_test_clouds.h"
+
+namespace segslam::dense {
+namespace {
+
+using core::SemanticClass;
+using test_clouds::addBox;
+
+core::Camera camera() {
+  core::Camera camera;
+  camera.width = 640;
+  camera.height = 480;
+  camera.fx = camera.fy = 525.0;
+  camera.cx = 319.5;
+  camera.cy = 239.5;
+  return camera;
+}
+
+// What every keyframe sees 2 m ahead: a table with a monitor on it.
+LabelledCloud desk() {
+  LabelledCloud cloud;
+  addBox(cloud, {-0.6f, 0.3f, 1.8f}, {0.6f, 0.35f, 2.6f}, SemanticClass::kTable);
+  addBox(cloud, {-0.2f, -0.1f, 2.2f}, {0.2f, 0.29f, 2.25f}, SemanticClass::kMonitor);
+  return cloud;
+}
+
+std::vector<MapObject> objectsOf(const std::vector<LabelledCloud>& keyframes) {
+  ObjectMapBuilder builder(camera(), 5.0, {});
+  LabelledCloud all;
+  for (std::size_t k = 0; k < keyframes.size(); ++k) {
+    builder.addKeyFrame(k, 0.5 * static_cast<double>(k), Eigen::Isometry3d::Identity(),
+                        keyframes[k], {});
+    all.append(keyframes[k]);
+  }
+  return builder.objects(voxelDownsample(all, 0.01), 0.01);
+}
+
+TEST(ObjectMapBuilder, ObjectsSeenByTheKeyFramesTakeTheMapsPoints) {
+  const auto objects = objectsOf(std::vector<LabelledCloud>(5, desk()));
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0].id, "table_1");
+  EXPECT_EQ(objects[1].id, "monitor_1");
+  EXPECT_EQ(objects[0].keyframes, 5);
+  EXPECT_DOUBLE_EQ(objects[0].confidence, 1.0);
+  EXPECT_NEAR(objects[1].centroid.z(), 2.225f, 0.01f);
+  EXPECT_NEAR(objects[1].bbox_max.y(), 0.29f, 0.011f);
+  EXPECT_GT(objects[0].points.size(), 1000u);
+}
+
+TEST(ObjectMapBuilder, AMislabelledEdgeIsNoObject) {
+  std::vector<LabelledCloud> keyframes(12, desk());
+  // Three keyframes out of twelve call a patch of the table's far edge a chair, one calls the
+  // monitor's top a bottle.
+  for (std::size_t k : {2u, 5u, 9u}) {
+    LabelledCloud& view = keyframes[k];
+    for (std::size_t i = 0; i < view.size(); ++i) {
+      if (view.points[i].z() > 2.45f && view.points[i].x() > 0.3f) {
+        view.labels[i] = static_cast<std::uint8_t>(SemanticClass::kChair);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < keyframes[7].size(); ++i) {
+    if (keyframes[7].points[i].y() < -0.05f) {
+      keyframes[7].labels[i] = static_cast<std::uint8_t>(SemanticClass::kBottle);
+    }
+  }
+  const auto objects = objectsOf(keyframes);
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0].label, "table");
+  EXPECT_EQ(objects[1].label, "monitor");
+  EXPECT_EQ(objects[0].keyframes, 12);
+}
+
+TEST(ObjectMapBuilder, ARarelySeenLabelIsNoObject) {
+  std::vector<LabelledCloud> keyframes(36, desk());
+  // A chair-labelled patch on the (unlabelled) wall behind, in three of the 36 views.
+  for (std::size_t k : {1u, 17u, 30u}) {
+    addBox(keyframes[k], {1.0f, -0.5f, 3.0f}, {1.3f, -0.2f, 3.0f}, SemanticClass::kChair);
+  }
+  const auto objects = objectsOf(keyframes);
+  ASSERT_EQ(objects.size(), 2u);
+  for (const auto& object : objects) EXPECT_NE(object.label, "chair");
+}
+
+TEST(ObjectMapBuilder, AWalkingPersonIsOneDynamicObject) {
+  ObjectMapBuilder builder(camera(), 5.0, {});
+  for (int k = 0; k < 8; ++k) {
+    LabelledCloud person;
+    const float x = -1.0f + 0.3f * static_cast<float>(k);
+    addBox(person, {x, -1.0f, 3.0f}, {x + 0.4f, 0.7f, 3.3f}, SemanticClass::kPerson);
+    builder.addKeyFrame(static_cast<std::uint64_t>(k), 0.4 * k, Eigen::Isometry3d::Identity(),
+                        desk(), person);
+  }
+  const auto objects = builder.objects(voxelDownsample(desk(), 0.01), 0.01);
+  ASSERT_EQ(objects.size(), 3u);
+  EXPECT_EQ(objects[2].id, "person_1");
+  EXPECT_TRUE(objects[2].dynamic);
+  EXPECT_EQ(objects[2].keyframes, 8);
+  EXPECT_NEAR(objects[2].bbox_max.x() - objects[2].bbox_min.x(), 2.5f, 0.02f);
+}
+
+}  // namespace
+}  // namespace segslam::dense
