@@ -44,7 +44,7 @@ run() {  # kind, name, dataset, run options...
   echo "== $name ($kind)"
   "$segslam" --log-level warn run --dataset "$dataset" --out "$run_dir" "$@" >/dev/null
   local score='null'
-  if [[ -f "$dataset/meta.json" ]]; then
+  if [[ -f "$dataset/instances.txt" ]]; then  # ground-truth instances: a synthetic sequence
     score="$(/usr/bin/python3 "$root/bench/object_map_score.py" "$run_dir" "$dataset")"
   fi
   python3 - "$name" "$kind" "$run_dir" "$score" >> "$results" <<'PY'

@@ -113,15 +113,40 @@ function addLayer(name, text, object, points, colour) {
   layers.set(name, { object, points, checkbox: row.box });
 }
 
-function addObjectControls() {
-  const container = document.getElementById("objects");
+// Objects by label, the label of the largest object first, each label's objects largest first,
+// with the share of the keyframes that saw the object which agreed on its label.
+function objectsByLabel() {
   const byLabel = new Map();
-  for (const [id, entry] of objects) {
+  const largestFirst = [...objects].sort(([, a], [, b]) => b.points - a.points);
+  for (const [id, entry] of largestFirst) {
     if (!byLabel.has(entry.label)) byLabel.set(entry.label, []);
     byLabel.get(entry.label).push(id);
   }
+  return byLabel;
+}
+
+function objectRow(id, onChange) {
+  const { points, dynamic, confidence, keyframes } = objects.get(id);
+  const row = checkboxRow(`${id}${dynamic ? " (dynamic)" : ""} `, null, onChange, { object: id });
+  const count = document.createElement("span");
+  count.className = "count";
+  count.textContent = points.toLocaleString();
+  row.label.append(count);
+  if (confidence !== undefined) {
+    const agreement = document.createElement("span");
+    agreement.className = "confidence";
+    agreement.textContent = ` ${Math.round(100 * confidence)} %`;
+    agreement.title = `${Math.round(100 * confidence)} % of the ${keyframes} keyframes that saw it call it ${objects.get(id).label}`;
+    row.label.append(agreement);
+  }
+  return row;
+}
+
+function addObjectControls() {
+  const container = document.getElementById("objects");
+  const byLabel = objectsByLabel();
   if (byLabel.size) container.replaceChildren();
-  for (const [label, ids] of [...byLabel].sort(([a], [b]) => a.localeCompare(b))) {
+  for (const [label, ids] of byLabel) {
     const instances = document.createElement("div");
     instances.className = "instances";
     const boxes = [];
@@ -136,16 +161,11 @@ function addObjectControls() {
       group.box.indeterminate = shown > 0 && shown < boxes.length;
     };
     for (const id of ids) {
-      const { points, dynamic } = objects.get(id);
-      const row = checkboxRow(`${id}${dynamic ? " (dynamic)" : ""} `, null, (on) => {
+      const row = objectRow(id, (on) => {
         setObjectVisible(id, on);
         syncGroup();
         update();
-      }, { object: id });
-      const count = document.createElement("span");
-      count.className = "count";
-      count.textContent = points.toLocaleString();
-      row.label.append(count);
+      });
       boxes.push(row.box);
       instances.append(row.label);
     }
@@ -216,6 +236,16 @@ async function loadTrajectories(trajectories) {
   }
 }
 
+// The edges of an object's oriented box (objects.json: centre, extent, axes as rows).
+function orientedBox({ centre, extent, axes }, colour) {
+  const edges = new THREE.EdgesGeometry(new THREE.BoxGeometry(...extent));
+  const box = new THREE.LineSegments(edges, new THREE.LineBasicMaterial({ color: colour }));
+  const [r0, r1, r2] = axes;
+  box.matrixAutoUpdate = false;
+  box.matrix.set(r0[0], r0[1], r0[2], centre[0], r1[0], r1[1], r1[2], centre[1], r2[0], r2[1], r2[2], centre[2], 0, 0, 0, 1);
+  return box;
+}
+
 async function loadMap(map) {
   const size = 2;
   if (map.static) {
@@ -233,11 +263,14 @@ async function loadMap(map) {
     const ply = parsePly(await fetchOk(object.url, "buffer"), object.url);
     const colour = labelColour(object.label);
     const cloud = pointCloud(ply, size + 1, colour);
-    const bounds = new THREE.Box3().setFromBufferAttribute(cloud.geometry.getAttribute("position"));
-    const box = new THREE.Box3Helper(bounds, colour);
+    const box = object.oriented_box ? orientedBox(object.oriented_box, colour)
+      : new THREE.Box3Helper(new THREE.Box3().setFromBufferAttribute(cloud.geometry.getAttribute("position")), colour);
     world.add(cloud);
     boxes.add(box);
-    objects.set(object.id, { label: object.label, dynamic: object.dynamic, cloud, box, points: ply.count });
+    objects.set(object.id, {
+      label: object.label, dynamic: object.dynamic, confidence: object.confidence, keyframes: object.keyframes,
+      cloud, box, points: ply.count,
+    });
   }
   if (map.objects.length) addLayer("boxes", "Object boxes", boxes, 0, null);
   addObjectControls();

@@ -38,9 +38,9 @@ function trajectory(count, zStep) {
 }
 
 const OBJECTS = [
-  { id: "chair_1", label: "chair", instance: 1, dynamic: false, points: patch(-0.4, 0.6, 1.2, 6, 0.04, [150, 90, 40]) },
-  { id: "chair_2", label: "chair", instance: 2, dynamic: false, points: patch(0.4, 0.6, 1.4, 5, 0.04, [150, 90, 40]) },
-  { id: "person_1", label: "person", instance: 1, dynamic: true, points: patch(0.0, 0.2, 2.0, 4, 0.05, [220, 180, 160]) },
+  { id: "chair_1", label: "chair", instance: 1, dynamic: false, confidence: 0.9, keyframes: 10, points: patch(-0.4, 0.6, 1.2, 6, 0.04, [150, 90, 40]) },
+  { id: "chair_2", label: "chair", instance: 2, dynamic: false, confidence: 0.75, keyframes: 4, points: patch(0.4, 0.6, 1.4, 5, 0.04, [150, 90, 40]) },
+  { id: "person_1", label: "person", instance: 1, dynamic: true, confidence: 1, keyframes: 6, points: patch(0.0, 0.2, 2.0, 4, 0.05, [220, 180, 160]) },
 ];
 
 export function writeFixtureRun(dir, withMap) {
@@ -62,6 +62,11 @@ export function writeFixtureRun(dir, withMap) {
       centroid: [0, 1, 2].map((k) => xs(k).reduce((a, b) => a + b) / points.length),
       bbox_min: [0, 1, 2].map((k) => Math.min(...xs(k))),
       bbox_max: [0, 1, 2].map((k) => Math.max(...xs(k))),
+      oriented_box: {
+        centre: [0, 1, 2].map((k) => (Math.min(...xs(k)) + Math.max(...xs(k))) / 2),
+        extent: [0, 1, 2].map((k) => Math.max(...xs(k)) - Math.min(...xs(k))),
+        axes: [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+      },
     });
   }
   writeFileSync(join(dir, "map", "objects.json"), JSON.stringify(index, null, 1));

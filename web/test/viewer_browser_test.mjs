@@ -92,6 +92,10 @@ async function checkMapRun(browser, runDir, screenshot) {
       `map loaded: ${before.static} static, ${before.dynamic} dynamic, ${before.objects} object points drawn`);
     check(before.trajectories.estimate === 30 && before.trajectories.ground_truth === 30 &&
       before.trajectories.keyframes === 6, "estimate, ground truth and keyframes drawn");
+    const rows = await page.$$eval("#objects label", (labels) => labels.map((label) => label.textContent));
+    check(rows[0].startsWith("chair (2)") && rows[1].startsWith("chair_1") && rows[1].includes("90 %") &&
+      rows[2].startsWith("chair_2") && rows[2].includes("75 %") && rows[3].startsWith("person (1)"),
+      `objects listed by label, largest first, with their confidence: ${JSON.stringify(rows)}`);
     await page.click('input[data-label="chair"]');
     const withoutChairs = await stats(page);
     check(withoutChairs.labels.chair === 0 && withoutChairs.labels.person === 16 &&
