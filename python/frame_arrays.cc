@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 #include "numpy_arrays.h"
@@ -60,14 +60,14 @@ cv::Mat maskView(const py::object& mask, const core::Camera& camera, std::vector
   return matView(keep.back(), CV_8UC1);
 }
 
-// A copy in metres where every value that is no depth (NaN, inf, negative) is 0.
+// A copy in metres where every value that is no depth (NaN, inf, negative) is 0, in OpenCV's
+// vectorised passes: a plain loop over the pixels cost 0.65 ms per 640x480 frame, most of the
+// module's per-frame overhead (bench/python_overhead.py).
 cv::Mat cleanMetres(const cv::Mat& metres) {
-  cv::Mat clean(metres.size(), CV_32FC1);
-  const auto* in = metres.ptr<float>();
-  auto* out = clean.ptr<float>();
-  for (std::size_t i = 0; i < metres.total(); ++i) {
-    out[i] = in[i] >= 0.0f && std::isfinite(in[i]) ? in[i] : 0.0f;
-  }
+  cv::Mat clean;
+  cv::threshold(metres, clean, 0.0, 0.0, cv::THRESH_TOZERO);  // negative (and NaN) to 0
+  cv::threshold(clean, clean, std::numeric_limits<float>::max(), 0.0, cv::THRESH_TOZERO_INV);
+  cv::patchNaNs(clean, 0.0);
   return clean;
 }
 

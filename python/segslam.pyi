@@ -23,7 +23,7 @@ class Camera:
     fy: float
     cx: float
     cy: float
-    distortion: tuple[float, float, float, float, float]
+    distortion: list[float]  # k1, k2, p1, p2, k3
     depth_factor: float
     fps: float
     def __init__(self, width: int, height: int, fx: float, fy: float, cx: float, cy: float,
@@ -120,6 +120,7 @@ class TrackResult:
     matches: int
     tracking_ms: float
     mask_ms: float
+    pipeline_ms: float
     @property
     def ok(self) -> bool: ...
 

@@ -3,6 +3,7 @@
 #include <pybind11/stl/filesystem.h>
 #include <spdlog/spdlog.h>
 
+#include <chrono>
 #include <cmath>
 #include <mutex>
 
@@ -14,6 +15,7 @@
 #include "segslam/place/vocabulary.h"
 #include "segslam/system/loop_detector_choice.h"
 #include "segslam/system/streaming_slam.h"
+#include "segslam/util/elapsed_time.h"
 
 namespace segslam::python {
 
@@ -115,6 +117,7 @@ struct TrackResult {
   int matches = 0;
   double tracking_ms = 0.0;
   double mask_ms = 0.0;
+  double pipeline_ms = 0.0;
 };
 
 TrackResult toTrackResult(const system::StreamedFrame& streamed) {
@@ -157,6 +160,7 @@ class System {
     if (!std::isfinite(timestamp)) throw py::value_error("timestamp must be finite");
     const FrameViews views = checkFrame(rgb, depth, mask, camera_);
     system::StreamedFrame streamed;
+    double pipeline_ms = 0.0;
     {
       const py::gil_scoped_release unlocked;
       io::RgbdFrame frame = toRgbdFrame(timestamp, views, camera_);
@@ -165,10 +169,14 @@ class System {
         throw py::value_error(fmt::format("timestamps must increase: {:.6f} after {:.6f}",
                                           timestamp, *last_timestamp_));
       }
+      const auto start = std::chrono::steady_clock::now();
       streamed = slam_->track(frame);
+      pipeline_ms = util::millisecondsSince(start);
       last_timestamp_ = timestamp;
     }
-    return toTrackResult(streamed);
+    TrackResult result = toTrackResult(streamed);
+    result.pipeline_ms = pipeline_ms;
+    return result;
   }
 
   void finish() {
@@ -266,6 +274,10 @@ void bindTrackResult(py::module_& module) {
                     "C++ time on the frame: masks, extraction, tracking (and, deterministic, "
                     "local mapping).")
       .def_readonly("mask_ms", &TrackResult::mask_ms)
+      .def_readonly("pipeline_ms", &TrackResult::pipeline_ms,
+                    "Wall time of the whole C++ pipeline call: tracking_ms, and handing late "
+                    "masks and keyframes over to mapping and the dense map (work `segslam run` "
+                    "does per frame too).")
       .def_property_readonly(
           "ok", [](const TrackResult& r) { return r.state == tracking::TrackingState::kOk; });
 }
