@@ -14,6 +14,9 @@ packages=(
   # The benches: ../shared/tools makes dynamic sequences with Debian's Python OpenCV, and
   # stress-ng keeps a core busy to measure a shared CPU.
   python3-opencv stress-ng
+  # The Python module (python/, docs/python.md): Debian's pybind11 and numpy, its tests' pytest
+  # and the map example's Open3D.
+  pybind11-dev python3-numpy python3-pytest python3-open3d
 )
 # The viewer's front end is built with node and npm (scripts/build_web.sh). Debian's packages are
 # used only when no node is installed: a NodeSource nodejs already provides npm and conflicts

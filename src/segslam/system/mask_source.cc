@@ -124,13 +124,26 @@ segmentation::MaskStreamOptions streamOptions(bool synchronous, int interval, in
 
 }  // namespace
 
-FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSourceOptions& options,
-                                 bool synchronous)
-    : source_(options.source) {
-  if (source_ == MaskSource::kOracle && !dataset.hasMasks()) {
+namespace {
+
+// Checked before anything loads, so that a run without masks fails at once.
+const core::Camera& cameraOfDatasetWithMasks(const io::TumDataset& dataset, MaskSource source) {
+  if (source == MaskSource::kOracle && !dataset.hasMasks()) {
     util::failAt(dataset.folder() / "mask.txt",
                  "oracle masks requested (--seg oracle) but the dataset has no mask.txt");
   }
+  return dataset.camera();
+}
+
+}  // namespace
+
+FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSourceOptions& options,
+                                 bool synchronous)
+    : FrameMaskSource(cameraOfDatasetWithMasks(dataset, options.source), options, synchronous) {}
+
+FrameMaskSource::FrameMaskSource(const core::Camera& camera, const MaskSourceOptions& options,
+                                 bool synchronous)
+    : source_(options.source) {
   const auto flow = std::make_shared<segmentation::MaskPropagator>();
   if (usesNetwork(source_)) {
     const auto config = segmentation::readModelConfig(options.model_config);
@@ -143,7 +156,7 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
   }
   if (source_ == MaskSource::kGeometric || source_ == MaskSource::kFused) {
     geometric_ = std::make_unique<segmentation::MaskStream>(
-        geometricSegment(dataset.camera(), options.geometric),
+        geometricSegment(camera, options.geometric),
         streamOptions(synchronous, kGeometricInterval, 0, false, false), flow);
   }
 }

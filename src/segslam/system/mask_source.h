@@ -71,6 +71,9 @@ class FrameMaskSource {
   // synchronous: segment on the calling thread (reproducible) instead of segmentation threads.
   FrameMaskSource(const io::TumDataset& dataset, const MaskSourceOptions& options,
                   bool synchronous);
+  // For frames that do not come from a dataset (a live camera, the Python module): oracle masks
+  // are then each frame's RgbdFrame::mask, whatever the caller put there.
+  FrameMaskSource(const core::Camera& camera, const MaskSourceOptions& options, bool synchronous);
 
   // With a network (semantic, fused) the labels are the network's, carried to this frame with
   // its mask and translated into core::SemanticClass ids, and there are no instances; otherwise

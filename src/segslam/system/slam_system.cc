@@ -89,6 +89,9 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
     stats.state = result.state;
     stats.matches = result.matches;
     stats.keyframe = result.new_keyframe;
+    if (result.state == tracking::TrackingState::kOk) {
+      stats.T_wc = tracker_.currentFrame().T_cw.inverse();
+    }
   }
   mapper_.setTrackedFrame(stats.frame_id);
   if (options_.deterministic) mapInline();

@@ -60,6 +60,9 @@ struct FrameStats {
   int matches = 0;
   tracking::TrackingState state = tracking::TrackingState::kNotInitialised;
   bool keyframe = false;
+  // The pose tracking gave the frame (camera-to-world), before local mapping and loop closing
+  // refine the map: what a live caller acts on. None when the frame is not tracked.
+  std::optional<geometry::Pose> T_wc;
 };
 
 // The SLAM pipeline: ORB extraction on the static area, tracking on the calling thread, local
