@@ -10,16 +10,6 @@ namespace {
 using core::SemanticClass;
 using test_clouds::addBox;
 
-core::Camera camera() {
-  core::Camera camera;
-  camera.width = 640;
-  camera.height = 480;
-  camera.fx = camera.fy = 525.0;
-  camera.cx = 319.5;
-  camera.cy = 239.5;
-  return camera;
-}
-
 // What every keyframe sees 2 m ahead: a table with a monitor on it.
 LabelledCloud desk() {
   LabelledCloud cloud;
@@ -29,7 +19,7 @@ LabelledCloud desk() {
 }
 
 std::vector<MapObject> objectsOf(const std::vector<LabelledCloud>& keyframes) {
-  ObjectMapBuilder builder(camera(), 5.0, {});
+  ObjectMapBuilder builder(core::Camera(), 5.0, {});  // 640 x 480, f = 525 px
   LabelledCloud all;
   for (std::size_t k = 0; k < keyframes.size(); ++k) {
     builder.addKeyFrame(k, 0.5 * static_cast<double>(k), Eigen::Isometry3d::Identity(),
@@ -87,7 +77,7 @@ TEST(ObjectMapBuilder, ARarelySeenLabelIsNoObject) {
 }
 
 TEST(ObjectMapBuilder, AWalkingPersonIsOneDynamicObject) {
-  ObjectMapBuilder builder(camera(), 5.0, {});
+  ObjectMapBuilder builder(core::Camera(), 5.0, {});  // 640 x 480, f = 525 px
   for (int k = 0; k < 8; ++k) {
     LabelledCloud person;
     const float x = -1.0f + 0.3f * static_cast<float>(k);
