@@ -63,6 +63,14 @@ std::map<std::size_t, std::size_t> ObjectAssociator::overlaps(const LabelSegment
 }
 
 std::vector<std::size_t> ObjectAssociator::matches(const LabelSegment& segment) const {
+  if (segment.instance != 0) {
+    for (std::size_t object = 0; object < objects_.size(); ++object) {
+      if (merged_into_[object] == object && objects_[object].instance == segment.instance) {
+        return {object};
+      }
+    }
+    return {};
+  }
   std::vector<std::pair<std::size_t, std::size_t>> same_label;  // (shared cells, object)
   std::vector<std::pair<std::size_t, std::size_t>> other_label;
   const double segment_cells = static_cast<double>(segment.cells.size());
@@ -120,6 +128,7 @@ void ObjectAssociator::merge(ObservedObject& source, ObservedObject& target) {
 }
 
 bool ObjectAssociator::fragmentsOfOne(const ObservedObject& a, const ObservedObject& b) const {
+  if (a.instance != 0 || b.instance != 0) return false;  // the ids have decided
   const bool a_smaller = a.cell_counts.size() < b.cell_counts.size();
   const ObservedObject& smaller = a_smaller ? a : b;
   const ObservedObject& larger = a_smaller ? b : a;
@@ -182,7 +191,7 @@ void ObjectAssociator::addKeyFrame(std::uint64_t keyframe_id,
     std::size_t object = 0;
     if (found.empty()) {
       object = objects_.size();
-      objects_.emplace_back();
+      objects_.emplace_back().instance = segment.instance;
       merged_into_.push_back(object);
     } else {
       object = found.front();

@@ -36,6 +36,7 @@ struct ObjectAssociationOptions {
 
 // One static object as the keyframes saw it.
 struct ObservedObject {
+  std::uint16_t instance = 0;  // the segmentation's instance id of its views (0 = none given)
   std::map<std::uint8_t, int> label_votes;  // keyframes that saw it with each label
   std::vector<std::uint64_t> keyframes;     // ids of the keyframes that saw it, ascending
   std::unordered_map<std::uint64_t, int> cell_counts;   // keyframes that saw each cell
@@ -52,7 +53,9 @@ struct ObservedObject {
 // Associates each keyframe's labelled segments (world frame) with the objects of the keyframes
 // before it, by 3D overlap and label, so that an object seen from many keyframes is one object
 // with one vote per keyframe for the label it was seen with. A segment that overlaps several
-// objects of its label joins them: the fragments that separate views made are merged.
+// objects of its label joins them: the fragments that separate views made are merged. Where the
+// segmentation tracks instances (an instance id on the segment), the id decides instead: views
+// with one id are one object, objects with two ids never merge.
 class ObjectAssociator {
  public:
   ObjectAssociator(double cell_size, ObjectAssociationOptions options);

@@ -61,6 +61,23 @@ TEST(ObjectAssociation, AMislabelledViewVotesForAnotherLabelOfTheSameObject) {
   EXPECT_NEAR(objects[0].confidence(), 2.0 / 3.0, 1e-9);
 }
 
+TEST(ObjectAssociation, InstanceIdsDecideWhereTheSegmentationTracksInstances) {
+  ObjectAssociator associator(kCell, {});
+  for (std::uint64_t k = 0; k < 3; ++k) {
+    // A monitor's screen and its foot, never seen joined, share the id 4; a box touching the
+    // screen has its own.
+    LabelledCloud view = box({0.0f, 0.0f, 0.0f}, {0.5f, 0.3f, 0.05f}, SemanticClass::kMonitor, 4);
+    view.append(box({0.2f, 0.5f, 0.0f}, {0.3f, 0.6f, 0.1f}, SemanticClass::kMonitor, 4));
+    view.append(box({0.5f, 0.0f, 0.0f}, {0.7f, 0.3f, 0.2f}, SemanticClass::kMonitor, 5));
+    associator.addKeyFrame(k, segmentsOf(view));
+  }
+  const auto objects = associator.objects();
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0].instance, 4);
+  EXPECT_EQ(objects[0].keyframes.size(), 3u);
+  EXPECT_EQ(objects[1].instance, 5);
+}
+
 TEST(ObjectAssociation, NeighboursOfOtherLabelsStaySeparate) {
   ObjectAssociator associator(kCell, {});
   for (std::uint64_t k = 0; k < 3; ++k) {
