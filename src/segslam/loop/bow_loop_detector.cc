@@ -42,6 +42,14 @@ void BowLoopDetector::add(const map::KeyFrame& keyframe) {
   entries_.push_back(std::move(entry));
 }
 
+void BowLoopDetector::forget(std::uint64_t keyframe_id) {
+  const auto it = entry_of_keyframe_.find(keyframe_id);
+  if (it == entry_of_keyframe_.end()) return;
+  database_.remove(it->second);
+  place::BowVector().swap(entries_[it->second].bow);
+  entry_of_keyframe_.erase(it);
+}
+
 std::vector<std::uint64_t> BowLoopDetector::candidates(const map::KeyFrame& query,
                                                        const std::set<std::uint64_t>& covisible,
                                                        std::size_t max_candidates) const {

@@ -29,7 +29,7 @@ struct BowLoopOptions {
 // score higher than the lowest score between the query and its covisible keyframes (which truly
 // see the same place: the score's scale differs from scene to scene), and at least `min_score`;
 // hits are then pooled by bestCandidateGroups. Keyframes are read through pointers: they must
-// outlive the detector (the map keeps even culled keyframes).
+// outlive the detector (the map keeps even culled keyframes, as nodes of its pose tree).
 class BowLoopDetector : public LoopCandidateDetector {
  public:
   explicit BowLoopDetector(std::shared_ptr<const place::Vocabulary> vocabulary,
@@ -37,6 +37,7 @@ class BowLoopDetector : public LoopCandidateDetector {
 
   [[nodiscard]] std::string name() const override { return "bow"; }
   void add(const map::KeyFrame& keyframe) override;
+  void forget(std::uint64_t keyframe_id) override;
   [[nodiscard]] std::vector<std::uint64_t> candidates(const map::KeyFrame& query,
                                                       const std::set<std::uint64_t>& covisible,
                                                       std::size_t max_candidates) const override;

@@ -59,6 +59,14 @@ void CnnLoopDetector::add(const map::KeyFrame& keyframe) {
   candidates_[keyframe.id] = &keyframe;
 }
 
+void CnnLoopDetector::forget(std::uint64_t keyframe_id) {
+  const auto it = index_of_keyframe_.find(keyframe_id);
+  if (it == index_of_keyframe_.end()) return;
+  bank_->release(it->second);
+  index_of_keyframe_.erase(it);
+  candidates_.erase(keyframe_id);
+}
+
 std::size_t CnnLoopDetector::indexOf(std::uint64_t keyframe_id) const {
   const auto it = index_of_keyframe_.find(keyframe_id);
   if (it == index_of_keyframe_.end()) {

@@ -53,6 +53,7 @@ class CnnLoopDetector : public LoopCandidateDetector {
   [[nodiscard]] std::string name() const override { return "cnn"; }
   void describe(const map::KeyFrame& keyframe) override;
   void add(const map::KeyFrame& keyframe) override;
+  void forget(std::uint64_t keyframe_id) override;
   // The query must have been described.
   [[nodiscard]] std::vector<std::uint64_t> candidates(const map::KeyFrame& query,
                                                       const std::set<std::uint64_t>& covisible,

@@ -65,6 +65,11 @@ void DescriptorVoteDetector::add(const map::KeyFrame& keyframe) {
   signatures_.push_back(signatureOf(keyframe));
 }
 
+void DescriptorVoteDetector::forget(std::uint64_t keyframe_id) {
+  std::erase_if(signatures_,
+                [keyframe_id](const Signature& s) { return s.keyframe_id == keyframe_id; });
+}
+
 std::vector<std::uint64_t> DescriptorVoteDetector::candidates(
     const map::KeyFrame& query, const std::set<std::uint64_t>& covisible,
     std::size_t max_candidates) const {

@@ -30,6 +30,7 @@ class DescriptorVoteDetector : public LoopCandidateDetector {
 
   [[nodiscard]] std::string name() const override { return "vote"; }
   void add(const map::KeyFrame& keyframe) override;
+  void forget(std::uint64_t keyframe_id) override;
   [[nodiscard]] std::vector<std::uint64_t> candidates(const map::KeyFrame& query,
                                                       const std::set<std::uint64_t>& covisible,
                                                       std::size_t max_candidates) const override;

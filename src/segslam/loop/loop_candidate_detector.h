@@ -24,6 +24,9 @@ class LoopCandidateDetector {
   virtual void describe(const map::KeyFrame& /*keyframe*/) {}
   // Remembers a keyframe as a future candidate.
   virtual void add(const map::KeyFrame& keyframe) = 0;
+  // Forgets a keyframe (culled from the map): it is no candidate again and what was kept of it is
+  // freed, so that the detector's memory follows the live map. Called with the map mutex held.
+  virtual void forget(std::uint64_t keyframe_id) = 0;
   // Up to `max_candidates` keyframe ids, best first. `covisible` are the query's covisible
   // keyframes: never candidates (they are no loop), but they tell how similar a keyframe that
   // truly sees the same place scores.

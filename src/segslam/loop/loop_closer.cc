@@ -163,6 +163,7 @@ void LoopCloser::processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe)
     std::lock_guard lock(map_.mutex);
     // The image was kept for describe() only: a keyframe's pixels would dominate the map's memory.
     keyframe->image.release();
+    forgetCulledKeyFrames(keyframe->id);
     if (keyframe->bad) return;
     keyframes_by_id_[keyframe->id] = keyframe.get();
     confirmed = confirmedCandidates(*keyframe);
@@ -171,6 +172,20 @@ void LoopCloser::processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe)
   for (std::uint64_t candidate : confirmed) {
     if (tryLoop(keyframe, candidate)) break;
   }
+}
+
+void LoopCloser::forgetCulledKeyFrames(std::uint64_t described) {
+  for (auto it = keyframes_by_id_.begin(); it != keyframes_by_id_.end();) {
+    if (it->second->bad) {
+      detector_->forget(it->first);
+      it = keyframes_by_id_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  // Keyframes are described in the order they were made: none up to `described` is read again
+  // outside the map mutex.
+  map_.releaseCulledKeyFrames(described);
 }
 
 std::vector<std::uint64_t> LoopCloser::confirmedCandidates(map::KeyFrame& keyframe) {

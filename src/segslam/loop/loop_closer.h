@@ -98,6 +98,9 @@ class LoopCloser {
   void run();
   std::shared_ptr<map::KeyFrame> popKeyFrame();
   void processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe);
+  // The detector forgets the keyframes culled since the last call, and the map frees their
+  // features up to the keyframe just described. Map mutex held.
+  void forgetCulledKeyFrames(std::uint64_t described);
   std::vector<std::uint64_t> confirmedCandidates(map::KeyFrame& keyframe);
   bool tryLoop(const std::shared_ptr<map::KeyFrame>& query, std::uint64_t candidate_id);
   void correctLoop(map::KeyFrame& query, map::KeyFrame& loop_keyframe,

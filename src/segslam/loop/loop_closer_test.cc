@@ -28,6 +28,8 @@ class EveryKeyFrameDetector : public LoopCandidateDetector {
  public:
   [[nodiscard]] std::string name() const override { return "every"; }
   void add(const map::KeyFrame& keyframe) override { ids_.push_back(keyframe.id); }
+  void forget(std::uint64_t keyframe_id) override { std::erase(ids_, keyframe_id); }
+  [[nodiscard]] const std::vector<std::uint64_t>& ids() const { return ids_; }
   [[nodiscard]] std::vector<std::uint64_t> candidates(const map::KeyFrame& /*query*/,
                                                       const std::set<std::uint64_t>& covisible,
                                                       std::size_t max_candidates) const override {
@@ -41,6 +43,34 @@ class EveryKeyFrameDetector : public LoopCandidateDetector {
  private:
   std::vector<std::uint64_t> ids_;
 };
+
+TEST(LoopCloser, CulledKeyFramesAreForgottenAndFreedOnceDescribed) {
+  map::Map map;
+  mapping::LocalMapper mapper(map);
+  auto detector = std::make_unique<EveryKeyFrameDetector>();
+  const EveryKeyFrameDetector& remembered = *detector;
+  LoopCloser closer(map, mapper, std::move(detector));
+  std::vector<std::shared_ptr<map::KeyFrame>> keyframes;
+  for (std::uint64_t frame = 0; frame < 4; ++frame) {
+    keyframes.push_back(map.createKeyFrame(mapping::testing::rowFrame(frame)));
+    closer.insertKeyFrame(keyframes.back());
+  }
+  closer.processQueued();
+  keyframes[1]->setBad();
+  keyframes[3]->setBad();
+  const auto next = map.createKeyFrame(mapping::testing::rowFrame(4));
+  const auto queued = map.createKeyFrame(mapping::testing::rowFrame(5));
+  queued->setBad();  // culled while waiting for the loop closer: read by describe() still
+  closer.insertKeyFrame(next);
+  closer.processQueued();
+  EXPECT_EQ(remembered.ids(), (std::vector<std::uint64_t>{0, 2, 4}));
+  EXPECT_TRUE(keyframes[1]->released());
+  EXPECT_TRUE(keyframes[3]->released());
+  EXPECT_TRUE(keyframes[1]->descriptors.empty());
+  EXPECT_FALSE(queued->released());
+  EXPECT_FALSE(keyframes[2]->released());
+  EXPECT_EQ(map.numKeyFrames(), 3u);
+}
 
 TEST(LoopCloser, KeyFramesMadeJustBeforeTheQueryAreNoLoop) {
   map::Map map;

@@ -162,4 +162,18 @@ void KeyFrame::setBad() {
   bad = true;
 }
 
+void KeyFrame::releaseFeatures() {
+  // Swapping with empty containers frees their storage; clear() would keep the capacity.
+  std::vector<cv::KeyPoint>().swap(keypoints);
+  std::vector<cv::KeyPoint>().swap(keypoints_un);
+  std::vector<float>().swap(depth);
+  std::vector<float>().swap(right_u);
+  descriptors.release();
+  dynamic_mask.release();
+  image.release();
+  grid = KeypointGrid();
+  std::vector<std::shared_ptr<MapPoint>>().swap(map_points_);
+  released_ = true;
+}
+
 }  // namespace segslam::map

@@ -47,6 +47,12 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   // Removes the keyframe from the graph (children are re-attached to the tree) and from its
   // map points; the first keyframe is never removed.
   void setBad();
+  // Frees what only a live keyframe needs (features, masks, image, grid, map point slots): a
+  // culled keyframe stays in the map only as a node of the pose tree, for the frames that were
+  // tracked relative to it. Only for a bad keyframe that no thread still reads outside the map
+  // mutex (the loop closer's describe()).
+  void releaseFeatures();
+  [[nodiscard]] bool released() const { return released_; }
 
   std::uint64_t id;
   std::uint64_t frame_id;
@@ -82,6 +88,7 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   std::vector<KeyFrame*> ordered_connections_;  // by weight, descending
   std::vector<int> ordered_weights_;
   bool first_connection_ = true;
+  bool released_ = false;
 };
 
 }  // namespace segslam::map

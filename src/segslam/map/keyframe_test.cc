@@ -69,5 +69,25 @@ TEST(KeyFrame, RemovingAKeyFrameHandsItsChildrenToItsParentWithoutCycles) {
   EXPECT_TRUE(keyframes.first->children.contains(keyframes.last.get()));
 }
 
+TEST(KeyFrame, AReleasedKeyFrameKeepsOnlyItsPlaceInThePoseTree) {
+  ThreeKeyFrames keyframes;
+  keyframes.middle->updateConnections();
+  keyframes.last->updateConnections();
+  keyframes.connectMiddleToFirst();
+  keyframes.middle->T_cw.translation() = Eigen::Vector3d(0.5, 0.0, 0.0);
+  keyframes.middle->setBad();
+  keyframes.middle->releaseFeatures();
+  EXPECT_TRUE(keyframes.middle->released());
+  EXPECT_EQ(keyframes.middle->size(), 0u);
+  EXPECT_TRUE(keyframes.middle->descriptors.empty());
+  EXPECT_TRUE(keyframes.middle->mapPoints().empty());
+  for (const auto& point : keyframes.with_first) {
+    EXPECT_FALSE(point->isObservedBy(keyframes.middle.get()));
+  }
+  // Frames tracked against it are still placed through its parent.
+  EXPECT_EQ(keyframes.middle->parent, keyframes.first.get());
+  EXPECT_TRUE(keyframes.middle->T_c_parent.translation().isApprox(Eigen::Vector3d(0.5, 0.0, 0.0)));
+}
+
 }  // namespace
 }  // namespace segslam::map

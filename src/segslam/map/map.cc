@@ -48,6 +48,18 @@ void Map::pruneBadMapPoints() {
   std::erase_if(map_points_, [](const auto& p) { return p->bad; });
 }
 
+std::size_t Map::releaseCulledKeyFrames(std::uint64_t last_done) {
+  std::size_t released = 0;
+  for (const auto& k : keyframes_) {
+    if (k->id > last_done) break;  // keyframes_ is ordered by id
+    if (k->bad && !k->released()) {
+      k->releaseFeatures();
+      ++released;
+    }
+  }
+  return released;
+}
+
 void Map::clear() {
   // Keyframes hold their points and points are reached through keyframes: dropping the
   // keyframes' point lists and the points' back-references frees both.

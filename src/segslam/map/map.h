@@ -31,6 +31,10 @@ class Map {
   [[nodiscard]] std::size_t numMapPoints() const;
   // Drops bad map points from the store (they may still be referenced by frames in flight).
   void pruneBadMapPoints();
+  // Frees the features of culled keyframes up to id `last_done` (KeyFrame::releaseFeatures): the
+  // last stage of the keyframe pipeline calls it once it is done with that keyframe, so memory
+  // follows the live keyframes, not every keyframe ever made. Returns how many were freed.
+  std::size_t releaseCulledKeyFrames(std::uint64_t last_done);
   void clear();
 
   // Counts rewrites of the whole map (loop correction, global BA), so that tracking knows when

@@ -17,6 +17,18 @@ BowDatabase::EntryId BowDatabase::add(const BowVector& vector, FeatureVector fea
   return entry;
 }
 
+void BowDatabase::remove(EntryId entry) {
+  BowVector& vector = vectors_.at(entry);
+  for (const auto& [word, weight] : vector) {
+    const auto postings = inverted_index_.find(word);
+    if (postings == inverted_index_.end()) continue;
+    std::erase_if(postings->second, [entry](const Posting& p) { return p.entry == entry; });
+    if (postings->second.empty()) inverted_index_.erase(postings);
+  }
+  BowVector().swap(vector);
+  FeatureVector().swap(feature_vectors_.at(entry));
+}
+
 std::vector<BowDatabase::Result> BowDatabase::query(
     const BowVector& vector, std::size_t max_results,
     const std::function<bool(EntryId)>& exclude) const {

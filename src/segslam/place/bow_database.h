@@ -23,6 +23,9 @@ class BowDatabase {
 
   // Adds an image; the vector is L1-normalised on the way in. Returns the entry's id (0, 1, ...).
   EntryId add(const BowVector& vector, FeatureVector feature_vector = {});
+  // Forgets an entry: queries never return it again and its vectors are freed. Ids are not
+  // reused.
+  void remove(EntryId entry);
 
   // The entries sharing words with the query, best first (ties: lower entry first), at most
   // max_results; entries for which `exclude` returns true are skipped. Scored through the inverted
@@ -32,6 +35,7 @@ class BowDatabase {
       const BowVector& vector, std::size_t max_results,
       const std::function<bool(EntryId)>& exclude = nullptr) const;
 
+  // Entries ever added, removed ones included.
   [[nodiscard]] std::size_t size() const { return vectors_.size(); }
   [[nodiscard]] const BowVector& bowVector(EntryId entry) const { return vectors_.at(entry); }
   [[nodiscard]] const FeatureVector& featureVector(EntryId entry) const {

@@ -65,5 +65,19 @@ TEST(BowDatabaseTest, KeepsFeatureVectors) {
   EXPECT_DOUBLE_EQ(database.bowVector(entry).at(1), 1.0);
 }
 
+TEST(BowDatabaseTest, RemovedEntriesAreNeverFoundAgainAndFreeTheirVectors) {
+  BowDatabase database;
+  database.add({{1, 1.0}, {2, 1.0}});
+  database.add({{1, 1.0}, {3, 1.0}}, FeatureVector{{7, {0}}});
+  database.add({{3, 1.0}});
+  database.remove(1);
+  const auto results = database.query({{1, 1.0}, {3, 1.0}}, 5);
+  ASSERT_EQ(results.size(), 2U);
+  for (const auto& result : results) EXPECT_NE(result.entry, 1U);
+  EXPECT_TRUE(database.bowVector(1).empty());
+  EXPECT_TRUE(database.featureVector(1).empty());
+  EXPECT_EQ(database.add({{1, 1.0}}), 3U);  // ids are not reused
+}
+
 }  // namespace
 }  // namespace segslam::place

@@ -83,6 +83,11 @@ void CnnFeatureBank::add(std::size_t index, const PlaceImage& image) {
   sources_.push_back(image.bgr.data);
 }
 
+void CnnFeatureBank::release(std::size_t index) {
+  images_.at(index) = {};
+  sources_.at(index) = nullptr;
+}
+
 CnnImageFeatures CnnFeatureBank::compute(const PlaceImage& image) {
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();

@@ -33,6 +33,9 @@ class CnnFeatureBank {
   // already added it (index < size()), `image` must be that same image.
   void add(std::size_t index, const PlaceImage& image);
 
+  // Frees image `index`'s features: it must never be compared again. Indices are not reused.
+  void release(std::size_t index);
+
   [[nodiscard]] std::size_t size() const { return images_.size(); }
   [[nodiscard]] const CnnImageFeatures& image(std::size_t i) const { return images_.at(i); }
   [[nodiscard]] const CnnBackboneConfig& config() const { return extractor_.config(); }

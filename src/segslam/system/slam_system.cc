@@ -56,6 +56,12 @@ SlamSystem::SlamSystem(const core::Camera& camera, SlamOptions options)
     mapper_.setProcessedKeyFrameObserver([this](std::shared_ptr<map::KeyFrame> keyframe) {
       loop_closer_->insertKeyFrame(keyframe);
     });
+  } else {
+    // Local mapping is then the keyframes' last stage: it frees what culled keyframes held.
+    mapper_.setProcessedKeyFrameObserver([this](std::shared_ptr<map::KeyFrame> keyframe) {
+      std::lock_guard lock(map_.mutex);
+      map_.releaseCulledKeyFrames(keyframe->id);
+    });
   }
   if (!options_.deterministic) {
     mapper_.start();

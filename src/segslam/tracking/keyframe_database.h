@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -19,18 +20,23 @@ class KeyFrameDatabase {
  public:
   explicit KeyFrameDatabase(std::shared_ptr<const place::Vocabulary> vocabulary);
 
+  // Also forgets the keyframes culled since the last add(), so that the database holds only live
+  // keyframes however long the run.
   void add(const std::shared_ptr<map::KeyFrame>& keyframe);
   // Up to max_candidates live (not culled) keyframes that share words with the frame, most
   // similar first.
   [[nodiscard]] std::vector<std::shared_ptr<map::KeyFrame>> candidates(
       const map::Frame& frame, std::size_t max_candidates) const;
 
+  // Keyframes held (live when the last one was added).
   [[nodiscard]] std::size_t size() const { return keyframes_.size(); }
 
  private:
+  void forgetCulled();
+
   std::shared_ptr<const place::Vocabulary> vocabulary_;
   place::BowDatabase database_;
-  std::vector<std::shared_ptr<map::KeyFrame>> keyframes_;  // by database entry
+  std::map<place::BowDatabase::EntryId, std::shared_ptr<map::KeyFrame>> keyframes_;
 };
 
 }  // namespace segslam::tracking

@@ -62,6 +62,20 @@ TEST(KeyFrameDatabase, CulledKeyFramesAreNoCandidates) {
   }
 }
 
+TEST(KeyFrameDatabase, CulledKeyFramesAreForgottenAtTheNextAdd) {
+  KeyFrameDatabase database(shippedVocabulary());
+  const auto keyframes = fiveKeyFrames(database);
+  keyframes[1]->setBad();
+  keyframes[3]->setBad();
+  database.add(std::make_shared<map::KeyFrame>(5, randomFrame(5, 5)));
+  EXPECT_EQ(database.size(), 4U);
+  // Nothing of the culled keyframe's place is left to match, not even its features.
+  keyframes[3]->releaseFeatures();
+  for (const auto& candidate : database.candidates(randomFrame(10, 3), 5)) {
+    EXPECT_NE(candidate, keyframes[3]);
+  }
+}
+
 TEST(KeyFrameDatabase, NeedsAVocabulary) {
   EXPECT_THROW(KeyFrameDatabase(nullptr), std::invalid_argument);
 }

@@ -158,6 +158,11 @@ bool Tracker::trackWithMotionModel() {
 
 bool Tracker::trackReferenceKeyFrame() {
   std::fill(current_.map_points.begin(), current_.map_points.end(), nullptr);
+  // A reference culled since the last frame may have had its features freed: its nearest live
+  // ancestor in the pose tree sees about the same.
+  while (reference_keyframe_->bad && reference_keyframe_->parent) {
+    reference_keyframe_ = reference_keyframe_->parent->shared_from_this();
+  }
   if (searchByDescriptors(current_, *reference_keyframe_, 0.7) < 15) return false;
   current_.T_cw = last_.has_pose ? last_.T_cw : reference_keyframe_->T_cw;
   return optimiseCurrentPose() >= kMinPoseMatches;
