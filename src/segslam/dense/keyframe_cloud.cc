@@ -79,7 +79,8 @@ KeyFrameCloud KeyFrameCloudMaker::make(const KeyFrameImages& images) const {
 
 KeyFrameCloud KeyFrameCloudMaker::downsample(const KeyFrameCloud& cloud) const {
   return {voxelDownsample(cloud.static_points, options_.voxel_size),
-          voxelDownsample(cloud.dynamic_points, options_.voxel_size)};
+          voxelDownsample(cloud.dynamic_points, options_.voxel_size),
+          voxelDownsample(cloud.folded_points, options_.voxel_size)};
 }
 
 KeyFrameCloud KeyFrameCloudMaker::backProject(const KeyFrameImages& images) const {

@@ -37,6 +37,9 @@ struct KeyFrameCloudOptions {
 struct KeyFrameCloud {
   LabelledCloud static_points;   // pixels outside the dilated dynamic mask
   LabelledCloud dynamic_points;  // pixels inside the (undilated) dynamic mask
+  // Static surface that culled keyframes saw and this one did not (foldInto): part of the map,
+  // but not this keyframe's view, so no vote for the objects it sees.
+  LabelledCloud folded_points;
 };
 
 // Back-projects every pixel with valid depth, z = depth, (x, y) = z * undistorted normalised

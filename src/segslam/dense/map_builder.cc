@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "segslam/dense/keyframe_fold.h"
 #include "segslam/util/thread_priority.h"
 
 namespace segslam::dense {
@@ -36,12 +37,37 @@ void MapBuilder::addKeyFrame(std::uint64_t id, double timestamp, KeyFrameImages 
   changed_.notify_all();
 }
 
+void MapBuilder::setLiveKeyFrames(core::Trajectory live) {
+  {
+    std::lock_guard lock(mutex_);
+    // Poses are noted at once: a keyframe culled before the map thread folds is still placed.
+    for (const auto& pose : live.poses()) {
+      const auto it = clouds_.lower_bound(pose.timestamp - 1e-4);
+      if (it != clouds_.end() && it->first <= pose.timestamp + 1e-4) {
+        it->second.T_wc = pose.T_wc;
+      } else {
+        poses_before_cloud_[pose.timestamp] = pose.T_wc;
+      }
+    }
+    pending_live_ = std::move(live);
+  }
+  changed_.notify_all();
+}
+
 void MapBuilder::finish() {
   std::unique_lock lock(mutex_);
   // What is still queued is made here rather than by the map thread: that thread runs at a low
   // priority, and now nothing else is waiting for the CPU.
   while (!queue_.empty()) makeFront(lock);
   changed_.wait(lock, [this] { return queue_.empty() && !busy_; });
+  if (pending_live_) {
+    const core::Trajectory live = std::move(*pending_live_);
+    pending_live_.reset();
+    busy_ = true;
+    foldCulled(live, true, lock);
+    busy_ = false;
+    changed_.notify_all();
+  }
   if (error_) std::rethrow_exception(error_);
 }
 
@@ -49,10 +75,16 @@ void MapBuilder::work() {
   util::lowerThisThreadsPriority(options_.thread_niceness);
   std::unique_lock lock(mutex_);
   while (true) {
-    changed_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
-    if (queue_.empty()) return;  // stopping, nothing left
+    changed_.wait(lock, [this] { return stopping_ || !queue_.empty() || pending_live_; });
+    if (queue_.empty() && !pending_live_) return;  // stopping, nothing left
     busy_ = true;
-    makeFront(lock);
+    if (!queue_.empty()) {
+      makeFront(lock);
+    } else {
+      const core::Trajectory live = std::move(*pending_live_);
+      pending_live_.reset();
+      foldCulled(live, true, lock);
+    }
     busy_ = false;
     changed_.notify_all();
   }
@@ -76,9 +108,56 @@ void MapBuilder::makeFront(std::unique_lock<std::mutex>& lock) {
   const double end = util::thisThreadCpuSeconds();
   lock.lock();
   if (error && !error_) error_ = error;
-  if (!error) clouds_[keyframe.timestamp] = {keyframe.id, std::move(cloud)};
+  if (!error) {
+    std::optional<geometry::Pose> pose;
+    if (const auto it = poses_before_cloud_.find(keyframe.timestamp);
+        it != poses_before_cloud_.end()) {
+      pose = it->second;
+      poses_before_cloud_.erase(it);
+    }
+    clouds_[keyframe.timestamp] = {keyframe.id, std::move(cloud), pose};
+  }
   timings_.back_projection += projected - start;
   timings_.keyframe_voxels += end - projected;
+}
+
+void MapBuilder::foldCulled(const core::Trajectory& live, bool only_older,
+                            std::unique_lock<std::mutex>& lock) {
+  if (live.empty()) return;
+  const double newest = live.poses().back().timestamp;
+  Clouds culled;
+  Clouds targets;
+  for (auto it = clouds_.begin(); it != clouds_.end();) {
+    const std::optional<geometry::Pose> pose = live.poseAt(it->first, 1e-4);
+    if (pose) it->second.T_wc = *pose;
+    const bool gone = !pose && (!only_older || it->first < newest);
+    const bool is_culled = gone && it->second.T_wc;
+    if (gone && !is_culled) {
+      it = clouds_.erase(it);  // culled before any pose of it came: where it was is unknown
+    } else if (pose || is_culled) {
+      (is_culled ? culled : targets).insert(clouds_.extract(it++));
+    } else {
+      ++it;
+    }
+  }
+  if (culled.empty() || targets.empty()) {
+    clouds_.merge(culled);
+    clouds_.merge(targets);
+    return;
+  }
+  lock.unlock();
+  std::vector<Eigen::Isometry3d> target_poses;
+  std::vector<StoredCloud*> target_clouds;
+  for (auto& [timestamp, stored] : targets) {
+    target_poses.push_back(*stored.T_wc);
+    target_clouds.push_back(&stored);
+  }
+  for (auto& [timestamp, stored] : culled) {
+    StoredCloud& target = *target_clouds[nearestView(*stored.T_wc, target_poses)];
+    foldInto(target.cloud, *target.T_wc, stored.cloud, *stored.T_wc, options_.keyframe.voxel_size);
+  }
+  lock.lock();
+  clouds_.merge(targets);
 }
 
 MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe_poses,
@@ -95,6 +174,7 @@ MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe
     world.object_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     world.static_points.append(static_points);
+    world.static_points.append(transformed(cloud.folded_points, pose.T_wc));
     world.dynamic_points.append(dynamic_points);
   }
   const double voxel = options_.keyframe.voxel_size;
@@ -104,7 +184,8 @@ MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe
 
 DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses) {
   finish();
-  std::lock_guard lock(mutex_);
+  std::unique_lock lock(mutex_);
+  foldCulled(keyframe_poses, false, lock);
   DenseMap map;
   map.voxel_size = options_.keyframe.voxel_size;
   auto start = std::chrono::steady_clock::now();

@@ -6,6 +6,7 @@
 #include <exception>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "segslam/core/camera.h"
@@ -48,13 +49,21 @@ class MapBuilder {
   // Queues a keyframe and returns at once. The images are shared, not copied: the caller must
   // not write into them afterwards. Timestamps must be unique.
   void addKeyFrame(std::uint64_t id, double timestamp, KeyFrameImages images);
-  // Waits until every queued keyframe has its cloud; rethrows the first error a keyframe gave
-  // (images of the wrong type or size).
+  // The latest poses of the live keyframes (camera to world, e.g. SLAM's keyframe trajectory
+  // after each new keyframe). A keyframe whose cloud the map holds, older than the newest of them
+  // and missing from them, was culled: its cloud is folded into the cloud of the live keyframe
+  // with the nearest view (foldInto), so what it saw stays in the map while the clouds kept are
+  // as many as the live keyframes, not as all keyframes ever made. Returns at once; the map
+  // thread folds. A keyframe culled before any of these calls saw it live is left out (dropped).
+  void setLiveKeyFrames(core::Trajectory live);
+  // Waits until every queued keyframe has its cloud and the last setLiveKeyFrames is folded;
+  // rethrows the first error a keyframe gave (images of the wrong type or size).
   void finish();
 
   // The world map: every keyframe cloud whose timestamp has a pose in `keyframe_poses`
   // (camera-to-world, matched within 1e-4 s) transformed into the world, merged, voxelised once
-  // more and cleaned of outliers; keyframes without a pose (culled ones) are left out. Objects
+  // more and cleaned of outliers; keyframes without a pose (culled ones) are folded into the
+  // nearest live one first where their last pose is known, else left out. Objects
   // come from the keyframes' labels (ObjectMapBuilder). Waits for the queue first.
   [[nodiscard]] DenseMap build(const core::Trajectory& keyframe_poses);
 
@@ -70,9 +79,15 @@ class MapBuilder {
   struct StoredCloud {
     std::uint64_t id = 0;
     KeyFrameCloud cloud;
+    std::optional<Eigen::Isometry3d> T_wc;  // its latest pose from setLiveKeyFrames
   };
+  using Clouds = std::map<double, StoredCloud>;  // by timestamp
 
   void work();
+  // Folds the clouds of keyframes missing from `live` (older than its newest keyframe when
+  // `only_older`) into the live ones; the folding itself runs with `lock` released.
+  void foldCulled(const core::Trajectory& live, bool only_older,
+                  std::unique_lock<std::mutex>& lock);
   // Makes the cloud of the queue's first keyframe, unlocking `lock` meanwhile.
   void makeFront(std::unique_lock<std::mutex>& lock);
   struct WorldClouds {
@@ -93,7 +108,10 @@ class MapBuilder {
   std::deque<QueuedKeyFrame> queue_;
   bool busy_ = false;
   bool stopping_ = false;
-  std::map<double, StoredCloud> clouds_;  // by timestamp
+  Clouds clouds_;
+  std::optional<core::Trajectory> pending_live_;  // for the map thread to fold
+  // Poses of live keyframes whose clouds are not made yet (by the keyframe's exact timestamp).
+  std::map<double, geometry::Pose> poses_before_cloud_;
   MapTimings timings_;
   std::exception_ptr error_;
   std::thread worker_;

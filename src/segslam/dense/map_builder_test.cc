@@ -74,6 +74,39 @@ TEST(MapBuilder, KeyFramesWithoutPoseAreLeftOutAndRebuildsFollowNewPoses) {
   for (const auto& p : moved.static_points.points) EXPECT_NEAR(p.z(), 4.0f, 1e-4f);
 }
 
+TEST(MapBuilder, CulledKeyFramesAreFoldedIntoTheNearestLiveOneAndMoveWithIt) {
+  const auto camera = test_scene::smallCamera();
+  MapBuilder builder(camera, testOptions());
+  builder.addKeyFrame(0, 1.0, flatView(camera, 1.0f, 50));
+  builder.addKeyFrame(1, 2.0, flatView(camera, 1.0f, 200));
+  builder.addKeyFrame(2, 3.0, flatView(camera, 1.0f, 120));
+  core::Trajectory all;
+  all.append(1.0, translation(0.0, 0.0, 0.0));
+  all.append(2.0, translation(0.5, 0.0, 0.0));  // beside the first, sees more of the wall
+  all.append(3.0, translation(10.0, 0.0, 5.0));
+  builder.setLiveKeyFrames(all);
+  core::Trajectory second_culled;
+  second_culled.append(1.0, translation(0.0, 0.0, 0.0));
+  second_culled.append(3.0, translation(10.0, 0.0, 5.0));
+  builder.setLiveKeyFrames(second_culled);
+  EXPECT_EQ(builder.numKeyFrames(), 2u);  // one cloud fewer, its view kept in the first's
+
+  core::Trajectory corrected;  // a loop correction moves the first keyframe 1 m forward
+  corrected.append(1.0, translation(0.0, 0.0, 1.0));
+  corrected.append(3.0, translation(10.0, 0.0, 5.0));
+  const DenseMap map = builder.build(corrected);
+  std::size_t only_second_saw = 0;
+  for (std::size_t i = 0; i < map.static_points.size(); ++i) {
+    const Eigen::Vector3f& p = map.static_points.points[i];
+    if (p.x() > 0.45f && p.x() < 1.0f) {
+      ++only_second_saw;
+      EXPECT_EQ(map.static_points.colours[i][0], 200);
+      EXPECT_NEAR(p.z(), 2.0f, 1e-4f);
+    }
+  }
+  EXPECT_GT(only_second_saw, 100u);
+}
+
 // A 3 x 3 patch far behind a wall: its centre pixel is no depth edge (its neighbours agree), so
 // only the statistical outlier removal can keep it out of the map.
 TEST(MapBuilder, IsolatedPointsAreCleanedFromTheMap) {

@@ -209,6 +209,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
           map_feed->addKeyFrame(stats.back().frame_id, frame.timestamp,
                                 {frame.rgb, frame.depth, frame_masks.dynamic, frame_masks.labels,
                                  frame_masks.instances});
+          map_builder->setLiveKeyFrames(slam.keyFrameTrajectory());
         }
       }
       if (map_feed) map_feed->setTrackedFrame(stats.back().frame_id);

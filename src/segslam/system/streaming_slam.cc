@@ -63,6 +63,7 @@ StreamedFrame StreamingSlam::track(const io::RgbdFrame& frame) {
       map_feed_->addKeyFrame(
           stats.frame_id, frame.timestamp,
           {frame.rgb, frame.depth, masks.dynamic, masks.labels, masks.instances});
+      map_builder_->setLiveKeyFrames(slam_.keyFrameTrajectory());
     }
   }
   if (map_feed_) map_feed_->setTrackedFrame(stats.frame_id);
