@@ -167,6 +167,10 @@ void MaskStream::segmentKeyFrame(std::uint64_t frame_id, const cv::Mat& bgr, con
   {
     std::lock_guard lock(mutex_);
     keyframe_jobs_.push_back(std::move(job));
+    while (keyframe_jobs_.size() > options_.max_queued_keyframes) {
+      keyframes_asked_.erase(keyframe_jobs_.front().current.id);
+      keyframe_jobs_.pop_front();
+    }
   }
   changed_.notify_all();
 }

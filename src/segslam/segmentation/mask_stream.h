@@ -59,6 +59,10 @@ struct MaskStreamOptions {
   // output last showed it: a network does not recognise a person cut down to a strip by the
   // frame's edge (the walker's shirt at the left border, 24 frames). 0 = off.
   int border_linger_frames = 0;
+  // Keyframes waiting for the segmenter, at most: when it cannot keep up (a slow machine, a
+  // camera carried quickly through new space) the oldest is given up and goes on with its carried
+  // mask, so that the queue's images never pile up.
+  std::size_t max_queued_keyframes = 4;
   DepthRefinementOptions refinement;
 };
 

@@ -242,6 +242,32 @@ TEST(MaskStream, KeyFramesAreSegmentedBeforeNewerFrames) {
   EXPECT_EQ(gate->order[2], 2u) << "the keyframe comes before frame 3 and later ones";
 }
 
+TEST(MaskStream, ASegmenterThatCannotKeepUpGivesUpTheOldestKeyFrames) {
+  auto gate = std::make_shared<GatedSegmenter>();
+  MaskStreamOptions options;
+  options.max_queued_keyframes = 2;
+  MaskStream stream(gatedSegment(gate), options);
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(40, 80, 120));
+  gate->allow(1);
+  static_cast<void>(stream.masksFor(0, bgr, cv::Mat()));  // waits for frame 0's output
+  static_cast<void>(stream.masksFor(1, bgr, cv::Mat()));  // frame 1 goes to the segmenter
+  gate->waitUntilGiven(2);
+  for (std::uint64_t keyframe = 2; keyframe < 8; ++keyframe) {
+    static_cast<void>(stream.masksFor(keyframe, bgr, cv::Mat()));
+    stream.segmentKeyFrame(keyframe, bgr, cv::Mat());
+  }
+  gate->allow(1000);
+  std::vector<std::uint64_t> keyframes;
+  for (std::uint64_t frame = 8; frame < 200 && keyframes.size() < 2; ++frame) {
+    static_cast<void>(stream.masksFor(frame, bgr, cv::Mat()));
+    for (const LateOutput& late : stream.takeLateOutputs()) {
+      if (late.keyframe) keyframes.push_back(late.frame_id);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_EQ(keyframes, (std::vector<std::uint64_t>{6, 7}));
+}
+
 // Frame 0: an object at the left edge. Frames 1-3: the segmenter cannot tell (empty mask).
 // Frame 4 and later: it sees nothing moving (all-zero mask).
 Segment unsureAfterTheFirstFrame() {
