@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """One soak run: `segslam run` on a long sequence with its memory sampled over time.
 
-    soak.py SEGSLAM DATASET RUN_DIR [run options...]
+    soak.py [--sweep-frames N] SEGSLAM DATASET RUN_DIR [run options...]
 
 Samples the process's resident memory (VmRSS) every 0.25 s and prints one JSON object: the run's
-frames, ATE, keyframes, map points and dense-map points (summary.json), peak RSS, the RSS after
-each tenth of the frames (from the time the frame log says each frame was reached), its growth
-per 1000 frames after the first tenth, and the median tracking time of each tenth of the run.
+frames, ATE, keyframes, map points and dense-map points (summary.json), peak RSS, the peak RSS up
+to the end of each tenth of the frames and of the first sweep (N frames; default: the first
+tenth), its growth per 1000 frames from the end of the first sweep to the last frame, the median
+tracking time of each tenth of the run, and the RSS samples (one per second). A frame is reached
+at its dataset time after the first frame's when the run plays at the camera's rate (the
+default), at its share of the tracking time with --fast.
 """
 import csv
 import json
@@ -29,9 +32,15 @@ def rss_mb(pid):
 
 
 def main():
-    segslam, dataset, run_dir = sys.argv[1:4]
+    args = sys.argv[1:]
+    sweep_frames = None
+    if args[:1] == ["--sweep-frames"]:
+        sweep_frames = int(args[1])
+        args = args[2:]
+    segslam, dataset, run_dir = args[:3]
+    run_options = args[3:]
     command = [segslam, "--log-level", "warn", "run", "--dataset", dataset, "--out", run_dir,
-               *sys.argv[4:]]
+               *run_options]
     start = time.monotonic()
     process = subprocess.Popen(command, stdout=subprocess.DEVNULL)
     samples = []  # (seconds since start, MB)
@@ -49,30 +58,45 @@ def main():
     tenth = max(frames // 10, 1)
     tracking = [float(r["tracking_ms"]) for r in rows]
     medians = [statistics.median(tracking[k * tenth:(k + 1) * tenth]) for k in range(10)]
-    # The frames were played as fast as tracked: the k-th tenth ends at the share of the
-    # tracking time its frames took, after the start-up before the first frame.
-    setup = samples[0][0] if samples else 0.0
-    loop = summary["tracking_seconds"]
-    cumulative = [sum(tracking[:(k + 1) * tenth]) for k in range(10)]
-    rss_at = []
-    for k in range(10):
-        t = setup + loop * cumulative[k] / max(cumulative[-1], 1e-9)
-        before = [mb for s, mb in samples if s <= t]
-        rss_at.append(max(before) if before else None)
+    # The run's wall time counts from its first frame: what came before is start-up.
+    setup = max(samples[-1][0] - summary["wall_seconds"], 0.0) if samples else 0.0
+    if "--fast" in run_options:
+        # Played as fast as tracked: a frame is reached at the share of the tracking time the
+        # frames before it took, after the start-up before the first frame.
+        loop = summary["tracking_seconds"]
+        cumulative = []
+        total = 0.0
+        for ms in tracking:
+            total += ms
+            cumulative.append(total)
+        reached = [setup + loop * c / max(total, 1e-9) for c in cumulative]
+    else:
+        first = float(rows[0]["timestamp"])
+        reached = [setup + float(r["timestamp"]) - first for r in rows]
+
+    def peak_until(frame):
+        before = [mb for s, mb in samples if s <= reached[frame]]
+        return max(before) if before else None
+
+    rss_at = [peak_until(min((k + 1) * tenth, frames) - 1) for k in range(10)]
+    first_sweep = min(sweep_frames or tenth, frames) - 1
+    rss_first_sweep = peak_until(first_sweep)
+    rss_last = peak_until(frames - 1)
     growth = None
-    if rss_at[0] is not None and rss_at[-1] is not None and frames > tenth:
-        growth = (rss_at[-1] - rss_at[0]) / ((frames - tenth) / 1000.0)
+    if rss_first_sweep is not None and rss_last is not None and frames - 1 > first_sweep:
+        growth = (rss_last - rss_first_sweep) / ((frames - 1 - first_sweep) / 1000.0)
     print(json.dumps({
-        "dataset": os.path.basename(dataset.rstrip("/")), "options": sys.argv[4:],
+        "dataset": os.path.basename(dataset.rstrip("/")), "options": run_options,
         "frames": frames, "wall_seconds": summary["wall_seconds"],
         "ate_rmse_m": summary.get("ate_rmse_m"), "lost_frames": summary.get("lost_frames"),
         "keyframes": summary.get("keyframes"), "map_points": summary.get("map_points"),
         "dense_keyframes": summary.get("map", {}).get("keyframes"),
         "dense_static_points": summary.get("map", {}).get("static_points"),
         "peak_rss_mb": max(mb for _, mb in samples) if samples else None,
-        "rss_mb_per_tenth": rss_at, "rss_growth_mb_per_1000_frames": growth,
+        "rss_mb_per_tenth": rss_at, "rss_mb_after_first_sweep": rss_first_sweep,
+        "rss_mb_at_last_frame": rss_last, "rss_growth_mb_per_1000_frames": growth,
         "tracking_median_ms_per_tenth": medians,
-        "rss_samples": samples[::4],
+        "rss_samples": [[round(t, 2), round(mb, 1)] for t, mb in samples[::4]],
     }))
 
 
