@@ -18,6 +18,7 @@
 #include "segslam/io/trajectory_io.h"
 #include "segslam/system/frame_player.h"
 #include "segslam/system/map_keyframe_feed.h"
+#include "segslam/system/map_session_layers.h"
 #include "segslam/util/elapsed_time.h"
 #include "segslam/util/error.h"
 
@@ -175,15 +176,17 @@ void checkLocalised(const MapFileOptions& options, std::size_t frame_index, cons
   }
 }
 
+// Saves the map and, for the viewer, its layer per session into the run folder.
 void finishMapFile(const MapFileOptions& options, const SlamSystem& slam,
                    const map::MapFileIdentity& identity, const LoadedMap* loaded,
-                   MapFileSummary& summary) {
+                   const std::filesystem::path& out_dir, MapFileSummary& summary) {
   summary.localize_only = options.localize_only;
   if (loaded) summary.loaded_points_culled = summary.loaded_points - slam.restoredPointsLeft();
   if (!options.save) return;
   summary.saved_file = *options.save;
   summary.saved_bytes = saveMapOf(slam, *options.save, identity, loaded);
   spdlog::info("map saved to {} ({} bytes)", options.save->string(), summary.saved_bytes);
+  writeSessionLayers(map::readMapFile(*options.save), out_dir / "map_sessions");
 }
 
 nlohmann::json mapFileJson(const MapFileSummary& m) {
@@ -306,7 +309,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       summary.outputs.push_back(out_dir / "map");
     }
     if (summary.map_file) {
-      finishMapFile(options.map_file, slam, identity, loaded ? &*loaded : nullptr,
+      finishMapFile(options.map_file, slam, identity, loaded ? &*loaded : nullptr, out_dir,
                     *summary.map_file);
     }
     summary.tracked_frames = trajectory.size();
