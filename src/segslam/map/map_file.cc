@@ -24,6 +24,10 @@ constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4 + 4 + kSectionCount * 12
 constexpr std::size_t kDescriptorBytes = 32;
 constexpr std::size_t kKeypointBytes = 7 * 4 + 2 * 4 + 2 * 4 + kDescriptorBytes;
 constexpr const char* kWhat = "map file";
+// The least a keyframe (no keypoints, no neighbours) and a point (no observations) take.
+constexpr std::size_t kMinKeyFrameBytes = 8 + 8 + 8 + 4 + 12 * 8 + 8 + 4 + 4;
+constexpr std::size_t kMinPointBytes =
+    8 + 8 + 4 + 6 * 8 + kDescriptorBytes + 2 * 8 + 8 + 4 + 4 + 1 + 4;
 
 void putPose(util::ByteWriter& out, const geometry::Pose& pose) {
   for (int r = 0; r < 3; ++r) {
@@ -267,26 +271,9 @@ void requireFullyRead(const util::ByteReader& in, const char* section) {
   }
 }
 
-}  // namespace
-
-std::string encodeMapFile(const MapFileContents& contents) {
-  const std::array<std::string, kSectionCount> sections = {
-      encodeSensor(contents), encodeKeyFrames(contents), encodePoints(contents)};
-  std::string payload;
-  for (const auto& section : sections) payload += section;
-  util::ByteWriter out;
-  out.putBytes(kMagic, sizeof(kMagic));
-  out.putU32(kMapFileVersion);
-  out.putU32(kSectionCount);
-  for (std::size_t s = 0; s < kSectionCount; ++s) {
-    out.putU32(kSectionTags[s]);
-    out.putU64(sections[s].size());
-  }
-  out.putU64(util::fnv1a64(payload));
-  return out.bytes() + payload;
-}
-
-MapFileContents decodeMapFile(std::string_view bytes, const std::filesystem::path& file) {
+// Checks the magic, version, section table, size and checksum; returns the section sizes.
+std::array<std::uint64_t, kSectionCount> checkHeaderAndPayload(std::string_view bytes,
+                                                               const std::filesystem::path& file) {
   util::ByteReader header(bytes, file, kWhat);
   char magic[sizeof(kMagic)];
   header.getBytes(magic, sizeof(magic));
@@ -320,6 +307,31 @@ MapFileContents decodeMapFile(std::string_view bytes, const std::filesystem::pat
   if (util::fnv1a64(payload) != checksum) {
     util::failAt(file, "map file fails its checksum (corrupt or edited)");
   }
+  return sizes;
+}
+
+}  // namespace
+
+std::string encodeMapFile(const MapFileContents& contents) {
+  const std::array<std::string, kSectionCount> sections = {
+      encodeSensor(contents), encodeKeyFrames(contents), encodePoints(contents)};
+  std::string payload;
+  for (const auto& section : sections) payload += section;
+  util::ByteWriter out;
+  out.putBytes(kMagic, sizeof(kMagic));
+  out.putU32(kMapFileVersion);
+  out.putU32(kSectionCount);
+  for (std::size_t s = 0; s < kSectionCount; ++s) {
+    out.putU32(kSectionTags[s]);
+    out.putU64(sections[s].size());
+  }
+  out.putU64(util::fnv1a64(payload));
+  return out.bytes() + payload;
+}
+
+MapFileContents decodeMapFile(std::string_view bytes, const std::filesystem::path& file) {
+  const auto sizes = checkHeaderAndPayload(bytes, file);
+  const std::string_view payload = bytes.substr(kHeaderBytes);
   MapFileContents contents;
   std::size_t offset = 0;
   const auto section = [&](std::size_t s) {
@@ -331,11 +343,11 @@ MapFileContents decodeMapFile(std::string_view bytes, const std::filesystem::pat
   decodeSensor(sensor, contents);
   requireFullyRead(sensor, "sensor");
   auto keyframes = section(1);
-  contents.keyframes.resize(keyframes.getCount(1));
+  contents.keyframes.resize(keyframes.getCount(kMinKeyFrameBytes));
   for (auto& k : contents.keyframes) k = decodeKeyFrame(keyframes, contents.sensor.pyramid_levels);
   requireFullyRead(keyframes, "keyframe");
   auto points = section(2);
-  contents.points.resize(points.getCount(1));
+  contents.points.resize(points.getCount(kMinPointBytes));
   for (auto& p : contents.points) p = decodePoint(points);
   requireFullyRead(points, "point");
   checkReferences(contents, points);

@@ -161,18 +161,20 @@ void describeLoadedMap(const std::filesystem::path& file, const LoadedMap& loade
 }
 
 // A loaded map that the camera does not find itself in soon is the wrong map (or the wrong
-// place): the run stops rather than track nothing.
-void checkLocalised(const MapFileOptions& options, std::size_t frame_index, const FrameStats& stats,
-                    MapFileSummary& summary) {
+// place): the run stops rather than track nothing. A sequence shorter than the deadline must be
+// localised by its last frame.
+void checkLocalised(const MapFileOptions& options, std::size_t frame_index, std::size_t frames,
+                    const FrameStats& stats, MapFileSummary& summary) {
   if (!summary.first_tracked_frame && stats.state == tracking::TrackingState::kOk) {
     summary.first_tracked_frame = frame_index;
     if (options.load) spdlog::info("frame {}: localised in the loaded map", frame_index);
   }
-  if (options.load && !summary.first_tracked_frame &&
-      frame_index + 1 >= options.frames_to_localise) {
-    util::failAt(*options.load, fmt::format("the camera was not localised in this map within its "
-                                            "first {} frames (another place, or another map?)",
-                                            options.frames_to_localise));
+  const std::size_t deadline = std::min(options.frames_to_localise, frames);
+  if (options.load && !summary.first_tracked_frame && frame_index + 1 >= deadline) {
+    util::failAt(*options.load,
+                 fmt::format("the camera was not localised in this map within its first {} frames "
+                             "(another place, or another map?)",
+                             deadline));
   }
 }
 
@@ -286,7 +288,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       if (map_feed) map_feed->setTrackedFrame(stats.back().frame_id);
       if (on_frame) on_frame(stats.back());
       if (summary.map_file) {
-        checkLocalised(options.map_file, i, stats.back(), *summary.map_file);
+        checkLocalised(options.map_file, i, summary.frames, stats.back(), *summary.map_file);
       }
     }
     summary.skipped_frames = damaged.count();
