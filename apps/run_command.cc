@@ -74,6 +74,7 @@ void loadVocabulary(RunOptions& options) {
   const auto vocabulary =
       std::make_shared<const place::Vocabulary>(place::Vocabulary::load(options.vocabulary));
   options.run.slam.relocalisation_vocabulary = vocabulary;
+  options.run.map_file.vocabulary_file = options.vocabulary;
   if (bow_loops) options.run.slam.loop_vocabulary = vocabulary;
 }
 
@@ -151,6 +152,22 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
     }
   }
   printEvaluation(s);
+  if (const auto& m = s.map_file) {
+    if (!m->loaded_file.empty()) {
+      fmt::print(
+          "  map file   loaded {} ({} keyframes, {} points, {:.1f} MB in {:.2f} s) as session "
+          "{}{}; "
+          "first tracked frame {}; {} loaded points culled\n",
+          m->loaded_file.string(), m->loaded_keyframes, m->loaded_points, m->loaded_bytes / 1e6,
+          m->load_seconds, m->session, m->localize_only ? ", localisation only" : "",
+          m->first_tracked_frame ? std::to_string(*m->first_tracked_frame) : "none",
+          m->loaded_points_culled);
+    }
+    if (!m->saved_file.empty()) {
+      fmt::print("  map file   saved {} ({:.1f} MB)\n", m->saved_file.string(),
+                 m->saved_bytes / 1e6);
+    }
+  }
   if (s.map) {
     fmt::print(
         "  map        {} static and {} dynamic points, {} objects from {} keyframes "
@@ -166,6 +183,8 @@ void runCommand(RunOptions& options) {
   util::createOutputFolder(options.out_dir);  // before the networks load: fail early
   options.run.masks = maskSourceOptions(options.masks);
   chooseLoopDetector(options);
+  options.run.map_file.place_recognition =
+      options.run.slam.loop_closing ? options.loop_detector : "none";
   loadVocabulary(options);
   loadLoopBackbone(options);
 
@@ -266,6 +285,22 @@ void registerRunCommand(CLI::App& app) {
                   "Neighbours of the map's statistical outlier removal (0: no removal)")
       ->capture_default_str()
       ->check(CLI::Range(0, 100));
+  auto* load_map =
+      run->add_option("--load-map", options->run.map_file.load,
+                      "Start in the map saved by an earlier run (--save-map): the first frames are "
+                      "relocalised into it wherever the camera is, and the run extends it");
+  run->add_option("--save-map", options->run.map_file.save,
+                  "At the end, write the SLAM map (keyframes, points, covisibility) to this file "
+                  "for --load-map (docs/map_file.md)");
+  run->add_flag("--localize-only", options->run.map_file.localize_only,
+                "With --load-map: track against the loaded map without adding keyframes or points "
+                "or changing it")
+      ->needs(load_map);
+  run->add_option("--localise-within", options->run.map_file.frames_to_localise,
+                  "With --load-map: stop with an error when no frame was localised in the loaded "
+                  "map within this many frames")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   run->callback([options] {
     if (options->run.slam.deterministic) options->run.realtime = false;
     if (options->out_dir.empty()) options->out_dir = defaultOutDir(options->dataset, "run");

@@ -276,6 +276,23 @@ async function loadMap(map) {
   addObjectControls();
 }
 
+// A layer per session of a saved map (map_sessions/ of the run): the map points and keyframe
+// centres each session made, in the session's colour (written by system::writeSessionLayers).
+async function loadSessions(sessions) {
+  for (const { session, points, keyframes } of sessions ?? []) {
+    const cloud = parsePly(await fetchOk(points, "buffer"), points);
+    const centres = parsePly(await fetchOk(keyframes, "buffer"), keyframes);
+    const group = new THREE.Group();
+    group.add(pointCloud(cloud, 3));
+    group.add(pointCloud(centres, 8));
+    const colour = centres.colours ? new THREE.Color(...centres.colours.slice(0, 3)).getHex()
+      : cloud.colours ? new THREE.Color(...cloud.colours.slice(0, 3)).getHex() : null;
+    addLayer(`session${session}`,
+      `Session ${session}: ${cloud.count.toLocaleString()} points, ${centres.count} keyframes`,
+      group, cloud.count, colour);
+  }
+}
+
 async function load() {
   const run = await fetchOk("/api/run", "json");
   state.run = run;
@@ -284,6 +301,7 @@ async function load() {
   if (!run.map) document.getElementById("notice").textContent = "no map in this run (trajectories only)";
   await loadTrajectories(run.trajectories);
   if (run.map) await loadMap(run.map);
+  await loadSessions(run.sessions);
   fitCamera();
   update();
 }

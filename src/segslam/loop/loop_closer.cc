@@ -142,6 +142,11 @@ void LoopCloser::run() {
   }
 }
 
+void LoopCloser::addRestoredKeyFrame(map::KeyFrame& keyframe) {
+  keyframes_by_id_[keyframe.id] = &keyframe;
+  detector_->add(keyframe);
+}
+
 std::shared_ptr<map::KeyFrame> LoopCloser::popKeyFrame() {
   std::lock_guard lock(queue_mutex_);
   if (queue_.empty()) return nullptr;

@@ -85,6 +85,10 @@ class LoopCloser {
   LoopCloser& operator=(const LoopCloser&) = delete;
 
   void insertKeyFrame(std::shared_ptr<map::KeyFrame> keyframe);
+  // A keyframe of a map restored from a file, before the first frame: a loop candidate for the
+  // keyframes to come, never a query itself. The caller holds the map mutex. Not for a detector
+  // that describes keyframes by their image (the file holds no images).
+  void addRestoredKeyFrame(map::KeyFrame& keyframe);
   void start();
   // Processes what is queued, waits for the global BA, then stops the thread.
   void finish();

@@ -98,6 +98,12 @@ void KeyFrame::attachToOlderParent() {
   first_connection_ = false;
 }
 
+void KeyFrame::restoreParent(KeyFrame* tree_parent) {
+  parent = tree_parent;
+  parent->children.insert(this);
+  first_connection_ = false;
+}
+
 void KeyFrame::addConnection(KeyFrame* other, int weight) {
   connections_[other] = weight;
   sortConnections();

@@ -43,6 +43,9 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   [[nodiscard]] std::vector<KeyFrame*> bestCovisibles(std::size_t n) const;
   [[nodiscard]] std::vector<KeyFrame*> covisiblesWithWeight(int min_weight) const;
   [[nodiscard]] int weight(KeyFrame* other) const;
+  // Attaches the keyframe under `tree_parent` as a saved map had it (map::restoreMap): later
+  // updates keep that parent.
+  void restoreParent(KeyFrame* tree_parent);
 
   // Removes the keyframe from the graph (children are re-attached to the tree) and from its
   // map points; the first keyframe is never removed.

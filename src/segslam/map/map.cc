@@ -19,6 +19,21 @@ std::shared_ptr<MapPoint> Map::createMapPoint(const Eigen::Vector3d& position,
   return point;
 }
 
+std::shared_ptr<KeyFrame> Map::restoreKeyFrame(std::uint64_t id, const Frame& frame) {
+  auto keyframe = std::make_shared<KeyFrame>(id, frame);
+  keyframes_.push_back(keyframe);
+  next_keyframe_id_ = std::max(next_keyframe_id_, id + 1);
+  return keyframe;
+}
+
+std::shared_ptr<MapPoint> Map::restoreMapPoint(std::uint64_t id, const Eigen::Vector3d& position,
+                                               KeyFrame* reference) {
+  auto point = std::make_shared<MapPoint>(id, position, reference);
+  map_points_.push_back(point);
+  next_map_point_id_ = std::max(next_map_point_id_, id + 1);
+  return point;
+}
+
 std::vector<std::shared_ptr<KeyFrame>> Map::keyFrames() const {
   std::vector<std::shared_ptr<KeyFrame>> live;
   for (const auto& k : keyframes_) {

@@ -23,6 +23,11 @@ class Map {
 
   std::shared_ptr<KeyFrame> createKeyFrame(const Frame& frame);
   std::shared_ptr<MapPoint> createMapPoint(const Eigen::Vector3d& position, KeyFrame* reference);
+  // A keyframe / point of a saved map (map::restoreMap) under its saved id; ids made later
+  // continue after the largest restored one.
+  std::shared_ptr<KeyFrame> restoreKeyFrame(std::uint64_t id, const Frame& frame);
+  std::shared_ptr<MapPoint> restoreMapPoint(std::uint64_t id, const Eigen::Vector3d& position,
+                                            KeyFrame* reference);
 
   // Live (not bad) keyframes / map points, ordered by id.
   [[nodiscard]] std::vector<std::shared_ptr<KeyFrame>> keyFrames() const;

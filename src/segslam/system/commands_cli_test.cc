@@ -149,5 +149,31 @@ TEST_F(CommandsCli, TwentyRealFramesRunAndReportTheRpeAsNotComputed) {
   EXPECT_TRUE(summary["rpe_not_computed"].is_string());
 }
 
+TEST_F(CommandsCli, RunNamesAMapFileThatIsNotOne) {
+  expectError("run --dataset " + inQuotes(dataset_) + " --seg none --no-map --load-map " +
+                  inQuotes(file_) + " --out " + inQuotes(temp_.path() / "run"),
+              file_.string() + ": not a segslam map file (no SEGSLMAP magic)");
+}
+
+// Save, then load and localise only: the map file is written again byte for byte.
+TEST_F(CommandsCli, RunSavesAMapAndLocalisesInItWithoutChangingIt) {
+  SEGSLAM_REQUIRE_SHARED(sequence, "tum_fr1_xyz_300");
+  const fs::path first = temp_.path() / "first.map";
+  const fs::path again = temp_.path() / "again.map";
+  const std::string common = "run --dataset " + inQuotes(sequence) +
+                             " --max-frames 30 --seg none --no-map --deterministic ";
+  auto result = runSegslam(
+      common + "--save-map " + inQuotes(first) + " --out " + inQuotes(temp_.path() / "run1"),
+      temp_.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("  map file   saved "), std::string::npos) << result.out;
+  result = runSegslam(common + "--load-map " + inQuotes(first) + " --localize-only --save-map " +
+                          inQuotes(again) + " --out " + inQuotes(temp_.path() / "run2"),
+                      temp_.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("first tracked frame 0"), std::string::npos) << result.out;
+  EXPECT_EQ(segslam::testing::fileContents(again), segslam::testing::fileContents(first));
+}
+
 }  // namespace
 }  // namespace segslam::system

@@ -18,6 +18,7 @@
 #include "segslam/io/trajectory_io.h"
 #include "segslam/system/frame_player.h"
 #include "segslam/system/map_keyframe_feed.h"
+#include "segslam/system/map_session_layers.h"
 #include "segslam/util/elapsed_time.h"
 #include "segslam/util/error.h"
 
@@ -146,6 +147,69 @@ void checkLoops(const io::TumDataset& dataset, SequenceRunSummary& summary) {
   }
 }
 
+void describeLoadedMap(const std::filesystem::path& file, const LoadedMap& loaded,
+                       const SlamSystem& slam, MapFileSummary& summary) {
+  summary.loaded_file = file;
+  summary.loaded_bytes = loaded.file_bytes;
+  summary.load_seconds = loaded.load_seconds;
+  summary.loaded_keyframes = loaded.contents.keyframes.size();
+  summary.loaded_points = loaded.contents.points.size();
+  summary.session = slam.sessions().current;
+  spdlog::info("map {}: {} keyframes, {} points, session {}, loaded in {:.3f} s", file.string(),
+               summary.loaded_keyframes, summary.loaded_points, summary.session,
+               summary.load_seconds);
+}
+
+// A loaded map that the camera does not find itself in soon is the wrong map (or the wrong
+// place): the run stops rather than track nothing. A sequence shorter than the deadline must be
+// localised by its last frame.
+void checkLocalised(const MapFileOptions& options, std::size_t frame_index, std::size_t frames,
+                    const FrameStats& stats, MapFileSummary& summary) {
+  if (!summary.first_tracked_frame && stats.state == tracking::TrackingState::kOk) {
+    summary.first_tracked_frame = frame_index;
+    if (options.load) spdlog::info("frame {}: localised in the loaded map", frame_index);
+  }
+  const std::size_t deadline = std::min(options.frames_to_localise, frames);
+  if (options.load && !summary.first_tracked_frame && frame_index + 1 >= deadline) {
+    util::failAt(*options.load,
+                 fmt::format("the camera was not localised in this map within its first {} frames "
+                             "(another place, or another map?)",
+                             deadline));
+  }
+}
+
+// Saves the map and, for the viewer, its layer per session into the run folder.
+void finishMapFile(const MapFileOptions& options, const SlamSystem& slam,
+                   const map::MapFileIdentity& identity, const LoadedMap* loaded,
+                   const std::filesystem::path& out_dir, MapFileSummary& summary) {
+  summary.localize_only = options.localize_only;
+  if (loaded) summary.loaded_points_culled = summary.loaded_points - slam.restoredPointsLeft();
+  if (!options.save) return;
+  summary.saved_file = *options.save;
+  summary.saved_bytes = saveMapOf(slam, *options.save, identity, loaded);
+  spdlog::info("map saved to {} ({} bytes)", options.save->string(), summary.saved_bytes);
+  writeSessionLayers(map::readMapFile(*options.save), out_dir / "map_sessions");
+}
+
+nlohmann::json mapFileJson(const MapFileSummary& m) {
+  nlohmann::json json = {{"session", m.session}, {"localize_only", m.localize_only}};
+  json["first_tracked_frame"] =
+      m.first_tracked_frame ? nlohmann::json(*m.first_tracked_frame) : nlohmann::json(nullptr);
+  if (!m.loaded_file.empty()) {
+    json["loaded_file"] = m.loaded_file.string();
+    json["loaded_bytes"] = m.loaded_bytes;
+    json["load_seconds"] = m.load_seconds;
+    json["loaded_keyframes"] = m.loaded_keyframes;
+    json["loaded_points"] = m.loaded_points;
+    json["loaded_points_culled"] = m.loaded_points_culled;
+  }
+  if (!m.saved_file.empty()) {
+    json["saved_file"] = m.saved_file.string();
+    json["saved_bytes"] = m.saved_bytes;
+  }
+  return json;
+}
+
 }  // namespace
 
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
@@ -166,7 +230,17 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     if (masks.segmentsKeyFrames()) {
       slam_options.mapper.own_mask_wait_frames = options.keyframe_mask_wait_frames;
     }
+    slam_options.tracker.localize_only = options.map_file.localize_only;
+    if (options.map_file.localize_only) slam_options.loop_closing = false;
     SlamSystem slam(dataset.camera(), slam_options);
+    const map::MapFileIdentity identity =
+        runIdentity(options.map_file, options.build_map ? out_dir / "map" : "");
+    std::optional<LoadedMap> loaded;
+    if (options.map_file.load || options.map_file.save) summary.map_file.emplace();
+    if (options.map_file.load) {
+      loaded = loadMapInto(slam, *options.map_file.load, identity);
+      describeLoadedMap(*options.map_file.load, *loaded, slam, *summary.map_file);
+    }
     std::optional<dense::MapBuilder> map_builder;
     std::optional<MapKeyFrameFeed> map_feed;
     if (options.build_map) {
@@ -214,6 +288,9 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       }
       if (map_feed) map_feed->setTrackedFrame(stats.back().frame_id);
       if (on_frame) on_frame(stats.back());
+      if (summary.map_file) {
+        checkLocalised(options.map_file, i, summary.frames, stats.back(), *summary.map_file);
+      }
     }
     summary.skipped_frames = damaged.count();
     if (map_feed) map_feed->flush();
@@ -234,11 +311,15 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       summary.map = buildAndWriteMap(*map_builder, slam.keyFrameTrajectory(), out_dir / "map");
       summary.outputs.push_back(out_dir / "map");
     }
+    if (summary.map_file) {
+      finishMapFile(options.map_file, slam, identity, loaded ? &*loaded : nullptr, out_dir,
+                    *summary.map_file);
+    }
     summary.tracked_frames = trajectory.size();
     summary.keyframes = slam.numKeyFrames();
     summary.map_points = slam.numMapPoints();
     summary.bundle_adjustment_seconds = slam.bundleAdjustmentSeconds();
-    summary.loop_closing = options.slam.loop_closing;
+    summary.loop_closing = slam_options.loop_closing;
     summary.loops = slam.loopClosingStats();
     summary.own_masks = slam.ownMaskStats();
     checkLoops(dataset, summary);
@@ -346,6 +427,7 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
                                   {"observations_dropped", own.observations_dropped}};
   }
   if (summary.map) json["map"] = toJson(*summary.map);
+  if (summary.map_file) json["map_file"] = mapFileJson(*summary.map_file);
   addEvaluationJson(summary, json);
   return json;
 }

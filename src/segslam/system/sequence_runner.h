@@ -12,6 +12,7 @@
 #include "segslam/eval/trajectory_evaluation.h"
 #include "segslam/io/tum_dataset.h"
 #include "segslam/system/map_output.h"
+#include "segslam/system/map_persistence.h"
 #include "segslam/system/mask_source.h"
 #include "segslam/system/slam_system.h"
 
@@ -33,6 +34,8 @@ struct SequenceRunOptions {
   // With a segmentation network, local mapping waits at most this many frames for each
   // keyframe's own network output (SlamOptions::mapper.own_mask_wait_frames).
   int keyframe_mask_wait_frames = 20;
+  // Loading and saving the SLAM map (segslam run --load-map, --save-map, --localize-only).
+  MapFileOptions map_file;
 };
 
 struct TimingSummary {
@@ -40,6 +43,24 @@ struct TimingSummary {
   double p95_ms = 0.0;
   double mean_ms = 0.0;
   double max_ms = 0.0;
+};
+
+// What a run did with map files.
+struct MapFileSummary {
+  std::filesystem::path loaded_file;  // empty: the run started a new map
+  std::uintmax_t loaded_bytes = 0;
+  double load_seconds = 0.0;
+  std::size_t loaded_keyframes = 0;
+  std::size_t loaded_points = 0;
+  // Loaded points gone at the end: seen through, on a moving object, or merged and culled by
+  // local mapping.
+  std::size_t loaded_points_culled = 0;
+  std::uint32_t session = 0;
+  bool localize_only = false;
+  // The first frame tracked (localised in the loaded map, or starting the new one).
+  std::optional<std::size_t> first_tracked_frame;
+  std::filesystem::path saved_file;  // empty: not saved
+  std::uintmax_t saved_bytes = 0;
 };
 
 struct SequenceRunSummary {
@@ -72,6 +93,7 @@ struct SequenceRunSummary {
   bool has_ground_truth = false;
   std::string evaluation_not_computed;  // why there is no evaluation
   std::optional<MapSummary> map;
+  std::optional<MapFileSummary> map_file;
   bool loop_closing = false;
   loop::LoopClosingStats loops;
   // Per accepted loop with ground truth: how far its verified relative pose is from the true one
@@ -94,7 +116,10 @@ struct SequenceRunSummary {
 // instances when it has them.
 // Frames with a damaged image (io::DamagedImageError) are skipped with a warning and counted;
 // throws util::Error when more than half of them are (io::DamagedFrames), and when the dataset
-// lacks what the options need (e.g. oracle masks).
+// lacks what the options need (e.g. oracle masks). With map_file.load the run starts in the saved
+// map (a bad or foreign file, or a camera not localised in it within
+// map_file.frames_to_localise frames, throws util::Error naming the file); with map_file.save
+// the final map is written there.
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
                                const std::filesystem::path& out_dir,
                                const std::function<void(const FrameStats&)>& on_frame);

@@ -128,6 +128,34 @@ void SlamSystem::finish() {
   if (loop_closer_) loop_closer_->finish();
 }
 
+map::MapFileSensor SlamSystem::mapSensor() const {
+  return {camera_->camera, options_.virtual_baseline_m, options_.close_depth_baselines,
+          options_.orb.num_levels, options_.orb.scale_factor};
+}
+
+void SlamSystem::restoreMap(const map::MapFileContents& contents) {
+  std::lock_guard lock(map_.mutex);
+  sessions_ = map::restoreMap(contents, camera_, map_);
+  // The CNN detector describes keyframes by their image, which the file does not hold: loops
+  // into the restored map are then left to relocalisation.
+  if (loop_closer_ && !options_.loop_backbone) {
+    for (const auto& keyframe : map_.keyFrames()) loop_closer_->addRestoredKeyFrame(*keyframe);
+  }
+  tracker_.startInRestoredMap();
+}
+
+map::MapFileContents SlamSystem::captureMap() const {
+  std::lock_guard lock(map_.mutex);
+  return map::captureMap(map_, sessions_);
+}
+
+std::size_t SlamSystem::restoredPointsLeft() const {
+  std::lock_guard lock(map_.mutex);
+  std::size_t left = 0;
+  for (const auto& point : map_.mapPoints()) left += sessions_.points.count(point->id);
+  return left;
+}
+
 loop::LoopClosingStats SlamSystem::loopClosingStats() const {
   return loop_closer_ ? loop_closer_->stats() : loop::LoopClosingStats{};
 }
@@ -145,6 +173,7 @@ core::Trajectory SlamSystem::keyFrameTrajectory() const {
   std::lock_guard lock(map_.mutex);
   core::Trajectory trajectory;
   for (const auto& keyframe : map_.keyFrames()) {
+    if (sessions_.keyframes.count(keyframe->id) > 0) continue;  // restored: an earlier session's
     trajectory.append(keyframe->timestamp, keyframe->T_cw.inverse());
   }
   return trajectory;

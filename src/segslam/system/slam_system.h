@@ -15,6 +15,7 @@
 #include "segslam/loop/loop_closer.h"
 #include "segslam/map/frame.h"
 #include "segslam/map/map.h"
+#include "segslam/map/map_snapshot.h"
 #include "segslam/mapping/local_mapper.h"
 #include "segslam/tracking/tracker.h"
 
@@ -89,8 +90,21 @@ class SlamSystem {
   // Waits for local mapping to finish its queue; call before reading the trajectories.
   void finish();
 
+  // The sensor a map file records for this system's camera and settings.
+  [[nodiscard]] map::MapFileSensor mapSensor() const;
+  // Continues in a saved map (before the first frame): its keyframes become relocalisation and
+  // loop candidates, tracking starts lost and relocalises into the map; keyframes and points
+  // made later extend it (or, with tracker.localize_only, none are made).
+  void restoreMap(const map::MapFileContents& contents);
+  // The map as the map file holds it, identity left to the caller; call after finish().
+  [[nodiscard]] map::MapFileContents captureMap() const;
+  // Restored map points that are still in the map (all of them before the first frame).
+  [[nodiscard]] std::size_t restoredPointsLeft() const;
+  [[nodiscard]] const map::MapSessions& sessions() const { return sessions_; }
+
   // Every tracked frame, placed relative to its reference keyframe's final pose.
   [[nodiscard]] core::Trajectory cameraTrajectory() const;
+  // This session's keyframes (not those of a restored map: their images are not this run's).
   [[nodiscard]] core::Trajectory keyFrameTrajectory() const;
   [[nodiscard]] std::size_t numKeyFrames() const;
   [[nodiscard]] std::size_t numMapPoints() const;
@@ -112,6 +126,7 @@ class SlamSystem {
   mapping::LocalMapper mapper_;
   std::unique_ptr<loop::LoopCloser> loop_closer_;
   tracking::Tracker tracker_;
+  map::MapSessions sessions_;
   std::uint64_t next_frame_id_ = 0;
 };
 

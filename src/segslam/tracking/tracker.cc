@@ -74,10 +74,10 @@ TrackingResult Tracker::track(map::Frame frame) {
     } else {
       velocity_ = geometry::orthonormalised(current_.T_cw * last_.T_cw.inverse());
     }
-    cullPointsSeenThrough();
+    if (!options_.localize_only) cullPointsSeenThrough();
     rememberPose();
     reference_overlap_.update(reference_keyframe_->id, trackedOfReference());
-    if (needNewKeyFrame()) {
+    if (!options_.localize_only && needNewKeyFrame()) {
       createKeyFrame();
       result.new_keyframe = true;
     }
@@ -92,6 +92,12 @@ TrackingResult Tracker::track(map::Frame frame) {
   result.state = state_;
   result.matches = inliers_;
   return result;
+}
+
+void Tracker::startInRestoredMap() {
+  state_ = TrackingState::kLost;
+  if (!keyframe_database_) return;
+  for (const auto& keyframe : map_.keyFrames()) keyframe_database_->add(keyframe);
 }
 
 bool Tracker::initialise() {
@@ -325,6 +331,7 @@ void Tracker::rememberPose() {
 
 int Tracker::cullPointsOnLateMask(std::uint64_t frame_id, const cv::Mat& dynamic_mask,
                                   const cv::Mat& depth_m) {
+  if (options_.localize_only) return 0;
   const auto pose = std::find_if(recent_poses_.begin(), recent_poses_.end(),
                                  [&](const auto& entry) { return entry.first == frame_id; });
   if (pose == recent_poses_.end()) return 0;

@@ -47,6 +47,9 @@ struct TrackerOptions {
   // Late masks of frames up to this many frames old are applied to the map (0 = never).
   int late_mask_max_age = 60;
   DynamicSurfaceOptions late_mask;
+  // Tracks against the map without changing it: no keyframes, no points, no culling (a loaded
+  // map used for localisation only).
+  bool localize_only = false;
 };
 
 enum class TrackingState { kNotInitialised, kOk, kLost };
@@ -68,6 +71,10 @@ class Tracker {
           std::shared_ptr<const place::Vocabulary> vocabulary = nullptr);
 
   TrackingResult track(map::Frame frame);
+
+  // The map was restored from a file before the first frame: tracking starts lost and
+  // relocalises into it instead of starting a new map, wherever the camera is.
+  void startInRestoredMap();
 
   // Culls the local map points that lie on what a late dynamic mask of an earlier frame marks
   // (tracking::pointsOnDynamicSurface). Frames older than the last few are ignored. Returns the

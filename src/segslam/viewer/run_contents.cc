@@ -99,6 +99,32 @@ nlohmann::json mapJson(const MapContents& map, const std::string& url_prefix) {
           {"objects", std::move(objects)}};
 }
 
+// map_sessions/session_<n>_points.ply with its keyframes beside it, by session.
+std::vector<SessionLayer> sessionLayers(const fs::path& run_dir) {
+  std::vector<SessionLayer> layers;
+  if (!fs::is_directory(run_dir / "map_sessions")) return layers;
+  for (int session = 0;; ++session) {
+    const fs::path points =
+        fs::path("map_sessions") / fmt::format("session_{}_points.ply", session);
+    const fs::path keyframes =
+        fs::path("map_sessions") / fmt::format("session_{}_keyframes.ply", session);
+    if (!fs::is_regular_file(run_dir / points) || !fs::is_regular_file(run_dir / keyframes)) break;
+    layers.push_back({session, points, keyframes});
+  }
+  return layers;
+}
+
+nlohmann::json sessionsJson(const std::vector<SessionLayer>& sessions,
+                            const std::string& url_prefix) {
+  nlohmann::json json = nlohmann::json::array();
+  for (const auto& layer : sessions) {
+    json.push_back({{"session", layer.session},
+                    {"points", url_prefix + layer.points.generic_string()},
+                    {"keyframes", url_prefix + layer.keyframes.generic_string()}});
+  }
+  return json;
+}
+
 }  // namespace
 
 RunContents describeRun(const fs::path& run_dir) {
@@ -115,6 +141,7 @@ RunContents describeRun(const fs::path& run_dir) {
     readObjectsIndex(run_dir, map);
     contents.map = std::move(map);
   }
+  contents.sessions = sessionLayers(run_dir);
   return contents;
 }
 
@@ -127,6 +154,7 @@ nlohmann::json runContentsJson(const RunContents& contents, const std::string& u
         {"keyframes", urlOrNull(contents.keyframes, url_prefix)},
         {"ground_truth", urlOrNull(contents.ground_truth, url_prefix)}}},
       {"map", contents.map ? mapJson(*contents.map, url_prefix) : nlohmann::json()},
+      {"sessions", sessionsJson(contents.sessions, url_prefix)},
   };
 }
 

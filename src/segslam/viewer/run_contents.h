@@ -27,6 +27,14 @@ struct MapContents {
   std::vector<MapObject> objects;
 };
 
+// The map points and keyframe centres one session made (map_sessions/ of a run that saved its
+// map: system::writeSessionLayers).
+struct SessionLayer {
+  int session = 0;
+  std::filesystem::path points;     // map_sessions/session_<n>_points.ply
+  std::filesystem::path keyframes;  // map_sessions/session_<n>_keyframes.ply
+};
+
 // What a `segslam run` output folder offers the viewer; every path is relative to the folder.
 struct RunContents {
   std::filesystem::path run_dir;
@@ -34,6 +42,7 @@ struct RunContents {
   std::optional<std::filesystem::path> keyframes;     // KeyFrameTrajectory.txt
   std::optional<std::filesystem::path> ground_truth;  // GroundTruthAligned.txt
   std::optional<MapContents> map;                     // absent when the run has no map/ folder
+  std::vector<SessionLayer> sessions;                 // by session; empty: no map file saved
 };
 
 // Looks at a run folder. Throws util::Error when the folder is missing or map/objects.json is

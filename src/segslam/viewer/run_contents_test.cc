@@ -44,6 +44,26 @@ TEST(ViewerRunContents, MapFilesAndObjectsBecomeUrls) {
   EXPECT_EQ(json["map"]["objects"][0]["points"], 16);
 }
 
+TEST(ViewerRunContents, EachSavedSessionIsALayer) {
+  const ScopedTempDir dir;
+  fixtures::writeRunFolder(dir.path(), /*with_map=*/false);
+  EXPECT_TRUE(describeRun(dir.path()).sessions.empty());
+  EXPECT_EQ(runContentsJson(describeRun(dir.path()), "/run/")["sessions"].size(), 0u);
+  for (int session : {0, 1}) {
+    for (const char* kind : {"points", "keyframes"}) {
+      fixtures::writePly(dir.path() / "map_sessions" /
+                             ("session_" + std::to_string(session) + "_" + kind + ".ply"),
+                         fixtures::grid(0.0f, 1.0f, 2, 200));
+    }
+  }
+  const auto contents = describeRun(dir.path());
+  ASSERT_EQ(contents.sessions.size(), 2u);
+  EXPECT_EQ(contents.sessions[1].session, 1);
+  const auto json = runContentsJson(contents, "/run/");
+  EXPECT_EQ(json["sessions"][1]["points"], "/run/map_sessions/session_1_points.ply");
+  EXPECT_EQ(json["sessions"][0]["keyframes"], "/run/map_sessions/session_0_keyframes.ply");
+}
+
 TEST(ViewerRunContents, MissingRunFolderIsAnError) {
   const ScopedTempDir dir;
   EXPECT_THROW(describeRun(dir.path() / "absent"), util::Error);
