@@ -14,6 +14,8 @@ struct DenseMap {
   LabelledCloud static_points;
   LabelledCloud dynamic_points;    // where dynamic objects were seen, for checking the masks
   std::vector<MapObject> objects;  // static objects, then dynamic ones
+  // Points of an earlier session's map (MapBuilder::setEarlierMap) this run saw through.
+  std::size_t earlier_points_removed = 0;
 };
 
 struct CloudCleaningOptions {

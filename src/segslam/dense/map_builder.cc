@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "segslam/dense/keyframe_fold.h"
+#include "segslam/dense/seen_through.h"
 #include "segslam/util/thread_priority.h"
 
 namespace segslam::dense {
@@ -52,6 +53,11 @@ void MapBuilder::setLiveKeyFrames(core::Trajectory live) {
     pending_live_ = std::move(live);
   }
   changed_.notify_all();
+}
+
+void MapBuilder::setEarlierMap(LabelledCloud static_points) {
+  std::lock_guard lock(mutex_);
+  earlier_ = std::move(static_points);
 }
 
 void MapBuilder::finish() {
@@ -163,10 +169,12 @@ void MapBuilder::foldCulled(const core::Trajectory& live, bool only_older,
 MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe_poses,
                                                 ObjectMapBuilder& objects) const {
   WorldClouds world;
+  std::vector<std::pair<Eigen::Isometry3d, const KeyFrameCloud*>> views;
   for (const auto& pose : keyframe_poses.poses()) {
     const auto it = clouds_.lower_bound(pose.timestamp - 1e-4);
     if (it == clouds_.end() || it->first > pose.timestamp + 1e-4) continue;
     const KeyFrameCloud& cloud = it->second.cloud;
+    views.emplace_back(pose.T_wc, &cloud);
     const LabelledCloud static_points = transformed(cloud.static_points, pose.T_wc);
     const LabelledCloud dynamic_points = transformed(cloud.dynamic_points, pose.T_wc);
     const auto start = std::chrono::steady_clock::now();
@@ -177,9 +185,14 @@ MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe
     world.static_points.append(transformed(cloud.folded_points, pose.T_wc));
     world.dynamic_points.append(dynamic_points);
   }
+  if (earlier_) {
+    const LabelledCloud kept = withoutSeenThrough(*earlier_, camera_, views);
+    world.earlier_points_removed = earlier_->size() - kept.size();
+    world.static_points.append(kept);
+  }
   const double voxel = options_.keyframe.voxel_size;
   return {voxelDownsample(world.static_points, voxel), voxelDownsample(world.dynamic_points, voxel),
-          world.object_seconds};
+          world.object_seconds, world.earlier_points_removed};
 }
 
 DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses) {
@@ -196,6 +209,7 @@ DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses) {
   };
   ObjectMapBuilder objects(camera_, options_.keyframe.max_depth, options_.objects);
   WorldClouds world = worldClouds(keyframe_poses, objects);
+  map.earlier_points_removed = world.earlier_points_removed;
   map.dynamic_points = std::move(world.dynamic_points);
   lap(timings_.merging);
   map.static_points = removeOutliers(world.static_points, options_.cleaning);

@@ -56,6 +56,10 @@ class MapBuilder {
   // as many as the live keyframes, not as all keyframes ever made. Returns at once; the map
   // thread folds. A keyframe culled before any of these calls saw it live is left out (dropped).
   void setLiveKeyFrames(core::Trajectory live);
+  // The static map of an earlier session, in this run's world frame (a loaded map file's dense
+  // map): build() keeps its points that none of this run's keyframes sees through
+  // (withoutSeenThrough), so what moved away since goes and what this run did not look at stays.
+  void setEarlierMap(LabelledCloud static_points);
   // Waits until every queued keyframe has its cloud and the last setLiveKeyFrames is folded;
   // rethrows the first error a keyframe gave (images of the wrong type or size).
   void finish();
@@ -94,6 +98,7 @@ class MapBuilder {
     LabelledCloud static_points;
     LabelledCloud dynamic_points;
     double object_seconds = 0.0;  // spent associating the keyframes' objects
+    std::size_t earlier_points_removed = 0;
   };
   // Both layers of every keyframe with a pose, in the world frame, voxelised together; each
   // keyframe's are handed to `objects` on the way.
@@ -109,7 +114,8 @@ class MapBuilder {
   bool busy_ = false;
   bool stopping_ = false;
   Clouds clouds_;
-  std::optional<core::Trajectory> pending_live_;  // for the map thread to fold
+  std::optional<core::Trajectory> pending_live_;
+  std::optional<LabelledCloud> earlier_;  // setEarlierMap  // for the map thread to fold
   // Poses of live keyframes whose clouds are not made yet (by the keyframe's exact timestamp).
   std::map<double, geometry::Pose> poses_before_cloud_;
   MapTimings timings_;

@@ -107,6 +107,27 @@ TEST(MapBuilder, CulledKeyFramesAreFoldedIntoTheNearestLiveOneAndMoveWithIt) {
   EXPECT_GT(only_second_saw, 100u);
 }
 
+TEST(MapBuilder, AnEarlierSessionsMapKeepsWhatThisRunDidNotSeeThrough) {
+  const auto camera = test_scene::smallCamera();
+  MapBuilder builder(camera, testOptions());
+  LabelledCloud earlier;
+  earlier.add({0.0f, 0.0f, 0.5f}, {7, 7, 7});   // in front of the wall this run sees: moved away
+  earlier.add({0.0f, 0.0f, 1.0f}, {8, 8, 8});   // on that wall
+  earlier.add({30.0f, 0.0f, 1.0f}, {9, 9, 9});  // where this run never looked
+  builder.setEarlierMap(earlier);
+  builder.addKeyFrame(0, 1.0, flatView(camera, 1.0f, 50));
+  core::Trajectory poses;
+  poses.append(1.0, translation(0.0, 0.0, 0.0));
+  const DenseMap map = builder.build(poses);
+  EXPECT_EQ(map.earlier_points_removed, 1u);
+  bool far_kept = false;
+  for (std::size_t i = 0; i < map.static_points.size(); ++i) {
+    EXPECT_NE(map.static_points.colours[i][0], 7);
+    far_kept = far_kept || map.static_points.colours[i][0] == 9;
+  }
+  EXPECT_TRUE(far_kept);
+}
+
 // A 3 x 3 patch far behind a wall: its centre pixel is no depth edge (its neighbours agree), so
 // only the statistical outlier removal can keep it out of the map.
 TEST(MapBuilder, IsolatedPointsAreCleanedFromTheMap) {

@@ -16,6 +16,7 @@ MapSummary buildAndWriteMap(dense::MapBuilder& builder, const core::Trajectory& 
   summary.static_points = map.static_points.size();
   summary.dynamic_points = map.dynamic_points.size();
   summary.objects = map.objects.size();
+  summary.earlier_points_removed = map.earlier_points_removed;
   summary.timings = builder.timings();
   summary.build_seconds = secondsSince(start);
   return summary;
@@ -26,6 +27,7 @@ nlohmann::json toJson(const MapSummary& summary) {
           {"static_points", summary.static_points},
           {"dynamic_points", summary.dynamic_points},
           {"objects", summary.objects},
+          {"earlier_points_removed", summary.earlier_points_removed},
           {"keyframe_seconds", summary.keyFrameSeconds()},
           {"build_seconds", summary.build_seconds},
           {"timings",

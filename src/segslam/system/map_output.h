@@ -15,6 +15,7 @@ struct MapSummary {
   std::size_t static_points = 0;
   std::size_t dynamic_points = 0;
   std::size_t objects = 0;
+  std::size_t earlier_points_removed = 0;  // of a loaded map's dense map, seen through
   dense::MapTimings timings;
   double build_seconds = 0.0;  // waiting for that thread, assembling, cleaning, writing
 

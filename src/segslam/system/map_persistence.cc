@@ -1,10 +1,12 @@
 #include "segslam/system/map_persistence.h"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <chrono>
 
+#include "segslam/dense/ply_io.h"
 #include "segslam/util/byte_stream.h"
 #include "segslam/util/elapsed_time.h"
 #include "segslam/util/error.h"
@@ -77,6 +79,19 @@ LoadedMap loadMapInto(SlamSystem& slam, const std::filesystem::path& file,
   loaded.file_bytes = std::filesystem::file_size(file);
   loaded.load_seconds = util::millisecondsSince(start) / 1000.0;
   return loaded;
+}
+
+std::optional<dense::LabelledCloud> linkedDenseMap(const LoadedMap& loaded,
+                                                   const std::filesystem::path& file) {
+  const std::string& folder = loaded.contents.identity.dense_map;
+  if (folder.empty()) return std::nullopt;
+  const std::filesystem::path points = std::filesystem::path(folder) / "static.ply";
+  if (!std::filesystem::exists(points)) {
+    spdlog::warn("{}: its dense map {} is gone; this run's map holds only what it sees",
+                 file.string(), points.string());
+    return std::nullopt;
+  }
+  return dense::readPly(points);
 }
 
 std::uintmax_t saveMapOf(const SlamSystem& slam, const std::filesystem::path& file,

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "segslam/dense/labelled_cloud.h"
 #include "segslam/map/map_file.h"
 #include "segslam/system/slam_system.h"
 
@@ -39,6 +40,12 @@ map::MapFileIdentity runIdentity(const MapFileOptions& options,
 // naming the file, for a bad file or a map made with another camera or vocabulary.
 LoadedMap loadMapInto(SlamSystem& slam, const std::filesystem::path& file,
                       const map::MapFileIdentity& identity);
+
+// The static points of the dense map a loaded map links (identity.dense_map / static.ply), for
+// this run's map to carry on (dense::MapBuilder::setEarlierMap); none when it links none. A link
+// to a map that is no longer there is named in a warning and the run goes on without it.
+std::optional<dense::LabelledCloud> linkedDenseMap(const LoadedMap& loaded,
+                                                   const std::filesystem::path& file);
 
 // Writes the map of `slam` to `file` and returns its size. A map that was loaded keeps its sensor
 // and, when the run added no keyframe (localisation only), its whole identity, so that the file

@@ -271,9 +271,11 @@ std::pair<int, int> chairPointsLeft(const fs::path& map_file, const fs::path& af
 
 // Session 1 maps the whole lap with chair_1 in place (the camera sees it in frames 155-235).
 // Session 2 plays frames 150-239 of the lap where the chair was pushed 0.55 m away during frames
-// 72-132, and, as the control, of the unchanged lap: the depth sees through where the chair was.
+// 72-132, and, as the control, of the unchanged lap: the depth sees through where the chair was,
+// in the SLAM map and in the dense map that session 1 left.
 TEST_F(MapSessions, PointsOfAChairMovedSinceTheMapWasMadeAreCulled) {
   auto options = sessionOptions();
+  options.build_map = true;
   options.map_file.save = dir_->path() / "whole_lap.map";
   runSequence(io::TumDataset::open(lap()), options, dir_->path() / "whole_lap", {});
   auto moved_lap = testing::noisyRoomLap(240);
@@ -283,9 +285,11 @@ TEST_F(MapSessions, PointsOfAChairMovedSinceTheMapWasMadeAreCulled) {
   const auto dataset = io::TumDataset::open(lap());
   const geometry::Pose T_world_map = dataset.groundTruth()->poses().front().T_wc;
   std::map<std::string, std::pair<int, int>> chair_points;
+  std::map<std::string, std::size_t> dense_points_removed;
   for (const auto& [name, sequence] :
        {std::pair{"moved", dir_->path() / "moved_lap"}, std::pair{"unchanged", lap()}}) {
     auto session = sessionOptions();
+    session.build_map = true;
     session.map_file.load = dir_->path() / "whole_lap.map";
     session.map_file.save = dir_->path() / (std::string(name) + ".map");
     const auto summary =
@@ -293,6 +297,8 @@ TEST_F(MapSessions, PointsOfAChairMovedSinceTheMapWasMadeAreCulled) {
                         framesFrom(sequence, 150, dir_->path() / (std::string(name) + "_150"))),
                     session, dir_->path() / name, {});
     EXPECT_EQ(summary.lost_frames, 0U) << name;
+    ASSERT_TRUE(summary.map) << name;
+    dense_points_removed[name] = summary.map->earlier_points_removed;
     chair_points[name] =
         chairPointsLeft(dir_->path() / "whole_lap.map", *session.map_file.save, T_world_map);
   }
@@ -302,6 +308,8 @@ TEST_F(MapSessions, PointsOfAChairMovedSinceTheMapWasMadeAreCulled) {
   EXPECT_GE(mapped, 20);
   EXPECT_GE(left_unchanged, mapped * 8 / 10);
   EXPECT_LE(left_moved, mapped / 2) << "of " << mapped << " chair points";
+  EXPECT_GT(dense_points_removed["moved"], 3 * dense_points_removed["unchanged"] + 100)
+      << dense_points_removed["unchanged"] << " removed in the unchanged room";
 }
 
 }  // namespace

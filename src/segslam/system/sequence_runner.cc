@@ -248,6 +248,11 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       map_options.keyframe.mask_dilation_px = options.slam.mask_dilation_px;
       map_builder.emplace(dataset.camera(), map_options);
       map_feed.emplace(*map_builder, masks.segmentsKeyFrames());
+      if (loaded) {
+        if (auto earlier = linkedDenseMap(*loaded, *options.map_file.load)) {
+          map_builder->setEarlierMap(std::move(*earlier));
+        }
+      }
     }
     // Ground-truth masks feed oracle masks only; labels and instances only the object map.
     const io::FrameLayers layers{options.masks.source == MaskSource::kOracle, options.build_map,
