@@ -67,6 +67,18 @@ void CnnLoopDetector::forget(std::uint64_t keyframe_id) {
   candidates_.erase(keyframe_id);
 }
 
+std::string CnnLoopDetector::savedDescription(std::uint64_t keyframe_id) const {
+  const auto it = index_of_keyframe_.find(keyframe_id);
+  return it == index_of_keyframe_.end() ? std::string() : bank_->encodeImage(it->second);
+}
+
+void CnnLoopDetector::addRestored(const map::KeyFrame& keyframe, const std::string& description) {
+  const std::size_t index = method_->size();
+  if (description.empty() || !method_->addEncoded(description)) return;
+  index_of_keyframe_[keyframe.id] = index;
+  candidates_[keyframe.id] = &keyframe;
+}
+
 std::size_t CnnLoopDetector::indexOf(std::uint64_t keyframe_id) const {
   const auto it = index_of_keyframe_.find(keyframe_id);
   if (it == index_of_keyframe_.end()) {

@@ -54,6 +54,10 @@ class CnnLoopDetector : public LoopCandidateDetector {
   void describe(const map::KeyFrame& keyframe) override;
   void add(const map::KeyFrame& keyframe) override;
   void forget(std::uint64_t keyframe_id) override;
+  // The keyframe's stored features (CnnFeatureBank::encodeImage); empty when not described.
+  [[nodiscard]] std::string savedDescription(std::uint64_t keyframe_id) const override;
+  // A restored keyframe is a candidate only with a description this backbone and layer made.
+  void addRestored(const map::KeyFrame& keyframe, const std::string& description) override;
   // The query must have been described.
   [[nodiscard]] std::vector<std::uint64_t> candidates(const map::KeyFrame& query,
                                                       const std::set<std::uint64_t>& covisible,

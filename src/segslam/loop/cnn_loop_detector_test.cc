@@ -113,5 +113,28 @@ TEST_F(CnnLoopDetectorOnALap, PlaceSeenForTheFirstTimeHasNoCandidate) {
   EXPECT_TRUE(candidatesOf(query).empty());
 }
 
+TEST_F(CnnLoopDetectorOnALap, KeyFramesRestoredWithTheirSavedDescriptionAreCandidates) {
+  for (int frame = 0; frame <= 600; frame += kStep) addKeyFrame(frame);
+  CnnLoopDetector saving(*backbone_);
+  for (const auto& keyframe : keyframes_) {
+    saving.describe(*keyframe);
+    saving.add(*keyframe);
+  }
+  // A later session: the same keyframes come from a map file, without their images.
+  CnnLoopDetector restored(*backbone_);
+  for (const auto& keyframe : keyframes_) {
+    restored.addRestored(*keyframe, saving.savedDescription(keyframe->id));
+  }
+  const map::KeyFrame& query = addKeyFrame(630);
+  restored.describe(query);
+  std::set<std::uint64_t> covisible = {query.id};
+  for (const map::KeyFrame* k : query.covisiblesWithWeight(0)) covisible.insert(k->id);
+  const auto found = restored.candidates(query, covisible, 3);
+  ASSERT_FALSE(found.empty());
+  EXPECT_LE(found.front(), 1U);
+  EXPECT_EQ(found, candidatesOf(query)) << "as if the session had described them itself";
+  EXPECT_TRUE(restored.savedDescription(9999).empty());
+}
+
 }  // namespace
 }  // namespace segslam::loop

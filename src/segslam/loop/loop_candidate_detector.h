@@ -27,6 +27,15 @@ class LoopCandidateDetector {
   // Forgets a keyframe (culled from the map): it is no candidate again and what was kept of it is
   // freed, so that the detector's memory follows the live map. Called with the map mutex held.
   virtual void forget(std::uint64_t keyframe_id) = 0;
+  // What a map file keeps of a remembered keyframe for this detector (empty: nothing; bags of
+  // words are recomputed from the keyframe's descriptors), and a keyframe restored from a map file
+  // with it. Called with the map mutex held, the loop-closing thread stopped.
+  [[nodiscard]] virtual std::string savedDescription(std::uint64_t /*keyframe_id*/) const {
+    return {};
+  }
+  virtual void addRestored(const map::KeyFrame& keyframe, const std::string& /*description*/) {
+    add(keyframe);
+  }
   // Up to `max_candidates` keyframe ids, best first. `covisible` are the query's covisible
   // keyframes: never candidates (they are no loop), but they tell how similar a keyframe that
   // truly sees the same place scores.

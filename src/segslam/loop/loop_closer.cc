@@ -142,9 +142,13 @@ void LoopCloser::run() {
   }
 }
 
-void LoopCloser::addRestoredKeyFrame(map::KeyFrame& keyframe) {
+void LoopCloser::addRestoredKeyFrame(map::KeyFrame& keyframe, const std::string& description) {
   keyframes_by_id_[keyframe.id] = &keyframe;
-  detector_->add(keyframe);
+  detector_->addRestored(keyframe, description);
+}
+
+std::string LoopCloser::savedDescription(std::uint64_t keyframe_id) const {
+  return detector_->savedDescription(keyframe_id);
 }
 
 std::shared_ptr<map::KeyFrame> LoopCloser::popKeyFrame() {

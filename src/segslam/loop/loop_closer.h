@@ -85,10 +85,13 @@ class LoopCloser {
   LoopCloser& operator=(const LoopCloser&) = delete;
 
   void insertKeyFrame(std::shared_ptr<map::KeyFrame> keyframe);
-  // A keyframe of a map restored from a file, before the first frame: a loop candidate for the
-  // keyframes to come, never a query itself. The caller holds the map mutex. Not for a detector
-  // that describes keyframes by their image (the file holds no images).
-  void addRestoredKeyFrame(map::KeyFrame& keyframe);
+  // A keyframe of a map restored from a file, before the first frame, with the description the
+  // detector saved of it (savedDescription): a loop candidate for the keyframes to come, never a
+  // query itself. The caller holds the map mutex.
+  void addRestoredKeyFrame(map::KeyFrame& keyframe, const std::string& description);
+  // What a map file keeps of a keyframe for the detector (LoopCandidateDetector::
+  // savedDescription). After finish(); the caller holds the map mutex.
+  [[nodiscard]] std::string savedDescription(std::uint64_t keyframe_id) const;
   void start();
   // Processes what is queued, waits for the global BA, then stops the thread.
   void finish();

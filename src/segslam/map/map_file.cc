@@ -24,8 +24,9 @@ constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4 + 4 + kSectionCount * 12
 constexpr std::size_t kDescriptorBytes = 32;
 constexpr std::size_t kKeypointBytes = 7 * 4 + 2 * 4 + 2 * 4 + kDescriptorBytes;
 constexpr const char* kWhat = "map file";
-// The least a keyframe (no keypoints, no neighbours) and a point (no observations) take.
-constexpr std::size_t kMinKeyFrameBytes = 8 + 8 + 8 + 4 + 12 * 8 + 8 + 4 + 4;
+// The least a keyframe (no keypoints, no neighbours, no place description) and a point (no
+// observations) take.
+constexpr std::size_t kMinKeyFrameBytes = 8 + 8 + 8 + 4 + 12 * 8 + 8 + 4 + 4 + 4;
 constexpr std::size_t kMinPointBytes =
     8 + 8 + 4 + 6 * 8 + kDescriptorBytes + 2 * 8 + 8 + 4 + 4 + 1 + 4;
 
@@ -139,6 +140,7 @@ void encodeKeyFrame(util::ByteWriter& out, const SavedKeyFrame& k) {
     out.putU64(other);
     out.putI32(weight);
   }
+  out.putString(k.place_description);
 }
 
 SavedKeyFrame decodeKeyFrame(util::ByteReader& in, int pyramid_levels) {
@@ -173,6 +175,7 @@ SavedKeyFrame decodeKeyFrame(util::ByteReader& in, int pyramid_levels) {
     const std::uint64_t other = in.getU64();
     k.connections.emplace_back(other, in.getI32());
   }
+  k.place_description = in.getString();
   return k;
 }
 

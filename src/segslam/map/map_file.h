@@ -53,6 +53,9 @@ struct SavedKeyFrame {
   std::vector<float> right_u;
   cv::Mat descriptors;                                     // N x 32, CV_8U
   std::vector<std::pair<std::uint64_t, int>> connections;  // covisible keyframe, weight
+  // The loop detector's own description of the keyframe (the CNN's pooled features), opaque
+  // here; empty: none (bags of words are recomputed from the descriptors).
+  std::string place_description;
 };
 
 struct SavedMapPoint {

@@ -38,6 +38,7 @@ MapFileContents twoKeyFrameMap() {
     }
     k.descriptors = cv::Mat(3, 32, CV_8U, cv::Scalar(static_cast<double>(id + 7)));
     k.connections = {{id == 0 ? 3U : 0U, 20}};
+    if (id == 0) k.place_description = std::string("cnn\0features", 12);
     contents.keyframes.push_back(k);
   }
   SavedMapPoint p;
@@ -71,6 +72,8 @@ TEST(MapFile, DecodesWhatItEncodedAndEncodesItAgainByteForByte) {
   EXPECT_FLOAT_EQ(decoded.keyframes[1].keypoints_un[0].pt.x, 0.25f);
   EXPECT_EQ(decoded.keyframes[1].keypoints[2].octave, 2);
   EXPECT_EQ(decoded.keyframes[1].descriptors.at<std::uint8_t>(2, 31), 10);
+  EXPECT_EQ(decoded.keyframes[0].place_description, std::string("cnn\0features", 12));
+  EXPECT_TRUE(decoded.keyframes[1].place_description.empty());
   EXPECT_EQ(decoded.identity.dense_map, "/runs/a/map");
   EXPECT_EQ(decoded.identity.vocabulary_hash, 0x1234U);
   ASSERT_EQ(decoded.points.size(), 1U);

@@ -10,6 +10,7 @@
 
 #include "segslam/place/masked_similarity.h"
 #include "segslam/place/union_mask.h"
+#include "segslam/util/byte_stream.h"
 #include "segslam/util/elapsed_time.h"
 
 namespace segslam::place {
@@ -83,6 +84,68 @@ void CnnFeatureBank::add(std::size_t index, const PlaceImage& image) {
   sources_.push_back(image.bgr.data);
 }
 
+namespace {
+
+void putMat(util::ByteWriter& out, const cv::Mat& mat) {
+  const cv::Mat continuous = mat.isContinuous() ? mat : mat.clone();
+  out.putI32(continuous.rows);
+  out.putI32(continuous.cols);
+  out.putI32(continuous.type());
+  out.putBytes(continuous.data, continuous.total() * continuous.elemSize());
+}
+
+cv::Mat getMat(util::ByteReader& in) {
+  const int rows = in.getI32();
+  const int cols = in.getI32();
+  const int type = in.getI32();
+  const bool known = type == CV_16FC1 || type == CV_8UC1;
+  if (!known || rows < 0 || cols < 0) in.fail("a feature map of an unknown layout");
+  cv::Mat mat(rows, cols, type);
+  in.getBytes(mat.data, mat.total() * mat.elemSize());
+  return mat;
+}
+
+}  // namespace
+
+std::string CnnFeatureBank::encodeImage(std::size_t index) const {
+  const CnnImageFeatures& features = images_.at(index);
+  util::ByteWriter out;
+  out.putString(config().name);
+  out.putU32(static_cast<std::uint32_t>(features.layers.size()));
+  for (std::size_t l = 0; l < features.layers.size(); ++l) {
+    out.putString(config().layers.at(l).name);
+    putMat(out, features.layers[l]);
+  }
+  putMat(out, features.static_mask);
+  return out.bytes();
+}
+
+bool CnnFeatureBank::addEncoded(std::size_t index, std::string_view bytes) {
+  if (index != images_.size()) throw std::logic_error("CNN place images added out of order");
+  util::ByteReader in(bytes, config().name, "CNN place description");
+  if (in.getString() != config().name) return false;
+  CnnImageFeatures features;
+  const std::size_t layers = in.getCount(12);
+  if (layers != grids_.size()) return false;
+  for (std::size_t l = 0; l < layers; ++l) {
+    if (in.getString() != config().layers.at(l).name) return false;
+    features.layers.push_back(getMat(in));
+    const cv::Mat& layer = features.layers.back();
+    if (layer.type() != CV_16FC1 || layer.rows != channels_[l] || layer.cols != grids_[l].area()) {
+      return false;
+    }
+  }
+  features.static_mask = getMat(in);
+  const cv::Mat& mask = features.static_mask;
+  if (!mask.empty() &&
+      (mask.type() != CV_8UC1 || mask.size() != cv::Size(kMaskWidth, kMaskHeight))) {
+    return false;
+  }
+  images_.push_back(std::move(features));
+  sources_.push_back(nullptr);
+  return true;
+}
+
 void CnnFeatureBank::release(std::size_t index) {
   images_.at(index) = {};
   sources_.at(index) = nullptr;
@@ -97,6 +160,7 @@ CnnImageFeatures CnnFeatureBank::compute(const PlaceImage& image) {
     features.layers.push_back(storedLayer(blobs[l], grids_[l]));
   }
   features.static_mask = storedMask(image.static_mask);
+  ++extracted_;
   extraction_ms_ += util::millisecondsSince(start);
   extraction_cpu_ms_ += 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   return features;
@@ -111,11 +175,11 @@ std::size_t CnnFeatureBank::bytesPerImage() const {
 }
 
 double CnnFeatureBank::meanExtractionMilliseconds() const {
-  return images_.empty() ? 0.0 : extraction_ms_ / static_cast<double>(images_.size());
+  return extracted_ == 0 ? 0.0 : extraction_ms_ / static_cast<double>(extracted_);
 }
 
 double CnnFeatureBank::meanExtractionCpuMilliseconds() const {
-  return images_.empty() ? 0.0 : extraction_cpu_ms_ / static_cast<double>(images_.size());
+  return extracted_ == 0 ? 0.0 : extraction_cpu_ms_ / static_cast<double>(extracted_);
 }
 
 CnnPlaceMethod::CnnPlaceMethod(std::shared_ptr<CnnFeatureBank> bank, std::size_t layer,
@@ -138,6 +202,12 @@ std::string CnnPlaceMethod::name() const {
 void CnnPlaceMethod::add(const PlaceImage& image) {
   bank_->add(count_, image);
   ++count_;
+}
+
+bool CnnPlaceMethod::addEncoded(std::string_view bytes) {
+  if (!bank_->addEncoded(count_, bytes)) return false;
+  ++count_;
+  return true;
 }
 
 double CnnPlaceMethod::similarity(std::size_t i, std::size_t j, bool union_mask) const {

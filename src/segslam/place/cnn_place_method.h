@@ -4,6 +4,7 @@
 #include <memory>
 #include <opencv2/core.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "segslam/place/cnn_feature_extractor.h"
@@ -35,6 +36,11 @@ class CnnFeatureBank {
 
   // Frees image `index`'s features: it must never be compared again. Indices are not reused.
   void release(std::size_t index);
+  // Image `index`'s features as bytes (for a map file), with the backbone's and layers' names.
+  [[nodiscard]] std::string encodeImage(std::size_t index) const;
+  // Adds features that encodeImage() wrote as image `index` (== size()) instead of extracting
+  // them; false, and nothing added, when they come from another backbone, layer or grid.
+  bool addEncoded(std::size_t index, std::string_view bytes);
 
   [[nodiscard]] std::size_t size() const { return images_.size(); }
   [[nodiscard]] const CnnImageFeatures& image(std::size_t i) const { return images_.at(i); }
@@ -56,6 +62,7 @@ class CnnFeatureBank {
   std::vector<int> channels_;
   std::vector<CnnImageFeatures> images_;
   std::vector<const unsigned char*> sources_;  // pixels each image was computed from
+  std::size_t extracted_ = 0;                  // images the network ran on (not added from bytes)
   double extraction_ms_ = 0.0;
   double extraction_cpu_ms_ = 0.0;
 };
@@ -84,6 +91,9 @@ class CnnPlaceMethod : public PlaceDescriptorMethod {
   void add(const PlaceImage& image) override;
   [[nodiscard]] std::size_t size() const override { return count_; }
   [[nodiscard]] double similarity(std::size_t i, std::size_t j, bool union_mask) const override;
+  // The next image from CnnFeatureBank::encodeImage()'s bytes; false (nothing added) when they do
+  // not fit the bank's backbone.
+  bool addEncoded(std::string_view bytes);
 
  private:
   // Static share of each cell of the layer's grid (1 x cells), the mask eroded by the layer's

@@ -91,5 +91,35 @@ TEST(CnnPlaceMethod, PooledUnionMaskIgnoresAMaskedRectangle) {
   }
 }
 
+TEST(CnnPlaceMethod, FeaturesReadBackFromBytesCompareAsTheExtractedOnes) {
+  SEGSLAM_REQUIRE_BACKBONE(extractor);
+  SEGSLAM_REQUIRE_SHARED(folder, "tum_fr1_xyz_300");
+  const auto dataset = io::TumDataset::open(folder);
+  cv::Mat static_mask(480, 640, CV_8UC1, cv::Scalar(255));
+  static_mask(cv::Rect(300, 100, 120, 200)).setTo(0);
+  auto bank = std::make_shared<CnnFeatureBank>(std::move(*extractor));
+  CnnPlaceMethod method(bank, 1, CnnVariant::kPooled);
+  method.add({dataset.loadFrame(0).rgb, static_mask});
+  method.add({dataset.loadFrame(40).rgb, cv::Mat()});
+
+  auto restored_bank = std::make_shared<CnnFeatureBank>(*tinyDarknet());
+  CnnPlaceMethod restored(restored_bank, 1, CnnVariant::kPooled);
+  ASSERT_TRUE(restored.addEncoded(bank->encodeImage(0)));
+  ASSERT_TRUE(restored.addEncoded(bank->encodeImage(1)));
+  EXPECT_EQ(restored.similarity(0, 1, true), method.similarity(0, 1, true));
+  EXPECT_EQ(restored_bank->encodeImage(0), bank->encodeImage(0));
+  EXPECT_EQ(restored_bank->meanExtractionMilliseconds(), 0.0) << "the network did not run";
+
+  // Another backbone config (only pool2 kept) cannot read them.
+  const auto config_file =
+      std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config/models/tiny_darknet_imagenet.yaml";
+  auto config = readCnnBackboneConfig(config_file);
+  config.layers.resize(1);
+  CnnFeatureBank other(CnnFeatureExtractor(
+      config, *segslam::testing::sharedDir() / "models/tiny_darknet_imagenet.onnx"));
+  EXPECT_FALSE(other.addEncoded(0, bank->encodeImage(0)));
+  EXPECT_EQ(other.size(), 0u);
+}
+
 }  // namespace
 }  // namespace segslam::place

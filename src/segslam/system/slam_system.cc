@@ -136,17 +136,35 @@ map::MapFileSensor SlamSystem::mapSensor() const {
 void SlamSystem::restoreMap(const map::MapFileContents& contents) {
   std::lock_guard lock(map_.mutex);
   sessions_ = map::restoreMap(contents, camera_, map_);
-  // The CNN detector describes keyframes by their image, which the file does not hold: loops
-  // into the restored map are then left to relocalisation.
-  if (loop_closer_ && !options_.loop_backbone) {
-    for (const auto& keyframe : map_.keyFrames()) loop_closer_->addRestoredKeyFrame(*keyframe);
+  for (const auto& saved : contents.keyframes) {
+    if (!saved.place_description.empty()) {
+      restored_descriptions_[saved.id] = saved.place_description;
+    }
+  }
+  if (loop_closer_) {
+    for (const auto& keyframe : map_.keyFrames()) {
+      const auto description = restored_descriptions_.find(keyframe->id);
+      loop_closer_->addRestoredKeyFrame(*keyframe, description == restored_descriptions_.end()
+                                                       ? std::string()
+                                                       : description->second);
+    }
   }
   tracker_.startInRestoredMap();
 }
 
 map::MapFileContents SlamSystem::captureMap() const {
   std::lock_guard lock(map_.mutex);
-  return map::captureMap(map_, sessions_);
+  map::MapFileContents contents = map::captureMap(map_, sessions_);
+  for (auto& saved : contents.keyframes) {
+    if (loop_closer_) saved.place_description = loop_closer_->savedDescription(saved.id);
+    const auto restored = restored_descriptions_.find(saved.id);
+    // A loaded keyframe keeps what the file said of it when this run's detector has nothing
+    // of it (another detector, or no loop closing).
+    if (saved.place_description.empty() && restored != restored_descriptions_.end()) {
+      saved.place_description = restored->second;
+    }
+  }
+  return contents;
 }
 
 std::size_t SlamSystem::restoredPointsLeft() const {

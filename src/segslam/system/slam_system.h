@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <optional>
@@ -127,6 +128,8 @@ class SlamSystem {
   std::unique_ptr<loop::LoopCloser> loop_closer_;
   tracking::Tracker tracker_;
   map::MapSessions sessions_;
+  // Loop detectors' descriptions of the restored keyframes, as the file held them.
+  std::map<std::uint64_t, std::string> restored_descriptions_;
   std::uint64_t next_frame_id_ = 0;
 };
 
