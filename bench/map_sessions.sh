@@ -14,7 +14,8 @@
 # - A changed world (synthetic, deterministic): session 1 maps a room lap; session 2 loads the
 #   map on the second half of the same lap where a chair was pushed 0.55 m (segslam synth
 #   --moved-furniture), and of the unchanged lap as the control: loaded map points culled in each,
-#   all and those where the chair stood.
+#   all and those where the chair stood, and the points of session 1's dense map that session 2
+#   saw through.
 # Writes bench/results/map_sessions.md and map_sessions.json. Needs ../shared.
 set -euo pipefail
 
@@ -34,19 +35,24 @@ if [[ ! -f "$out/session2/groundtruth.txt" ]]; then
     --people 2 --seed 21 --frames 150:450 --jpeg 95 >/dev/null
 fi
 
+map_option=--no-map  # the dense map only where it is measured (the changed world)
 run() {  # name, dataset, options...
   local name="$1" dataset="$2"; shift 2
   echo "== $name"
-  "$segslam" --log-level warn run --dataset "$dataset" --out "$out/runs/$name" --no-map "$@" \
+  "$segslam" --log-level warn run --dataset "$dataset" --out "$out/runs/$name" "$map_option" "$@" \
     > "$out/runs/$name.txt"
 }
 
 tool="$root/bench/map_sessions_score.py"
 score() {  # name, session-1 run, session-1 dataset, session-2 dataset[, extra JSON]
   python3 - "$1" "$(/usr/bin/python3 "$tool" score "$out/runs/$2" "$3/groundtruth.txt" \
-    "$out/runs/$1" "$4/groundtruth.txt")" "${5:-{\}}" >> "$results" <<'PY'
+    "$out/runs/$1" "$4/groundtruth.txt")" "${5:-{\}}" "$out/runs/$1/summary.json" >> "$results" <<'PY'
 import json, sys
-print(json.dumps({"run": sys.argv[1], **json.loads(sys.argv[2]), **json.loads(sys.argv[3])}))
+summary = json.load(open(sys.argv[4]))
+extra = {"loops_accepted": summary.get("loop_closing", {}).get("loops_accepted"),
+         "dense_points_removed": summary.get("map", {}).get("earlier_points_removed")}
+print(json.dumps({"run": sys.argv[1], **json.loads(sys.argv[2]), **json.loads(sys.argv[3]),
+                  **extra}))
 PY
 }
 
@@ -75,6 +81,7 @@ synth lap_moved_chair --moved-furniture
 for name in lap lap_moved_chair; do
   /usr/bin/python3 "$tool" frames-from "$out/$name" "$out/${name}_from150" 150
 done
+map_option=--map
 run synth_session1 "$out/lap" --seg none --deterministic --save-map "$out/lap.map"
 for name in lap lap_moved_chair; do
   run "synth_$name" "$out/${name}_from150" --seg none --deterministic --load-map "$out/lap.map" \
@@ -98,8 +105,8 @@ lines = ["# Map sessions (bench/map_sessions.sh)", "",
          "1's rigid transform; own: session 2 aligned on its own. Runs at the camera's rate",
          "(the default); tracking time per frame includes ORB extraction and the mask.", "",
          "| session 2 | multi-session ATE | own ATE | first tracked frame | lost after | "
-         "tracking median ms | keyframes | map file MB | load s |",
-         "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+         "tracking median ms | keyframes | loops accepted | map file MB | load s |",
+         "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
 def number(v, fmt):
     return "-" if v is None else format(v, fmt)
 for name in ("session2_new_map", "session2_extend", "session2_localize_only"):
@@ -108,7 +115,8 @@ for name in ("session2_new_map", "session2_extend", "session2_localize_only"):
     multi = None if name == "session2_new_map" else r["multi_session_ate_m"]
     cells = [name, mm(multi), mm(r["own_ate_m"]), number(r["first_tracked_frame"], "d"),
              number(r["lost_after_first"], "d"), number(r["tracking_median_ms"], ".1f"),
-             str(r["keyframes"]), number(size and size / 1e6, ".2f"),
+             str(r["keyframes"]), number(r["loops_accepted"], "d"),
+             number(size and size / 1e6, ".2f"),
              number(r["load_seconds"], ".3f")]
     lines.append("| " + " | ".join(cells) + " |")
 lines += ["", f"Session 1 ATE {mm(rows['session2_extend']['session1_ate_m'])} mm. Map file after "
@@ -116,13 +124,16 @@ lines += ["", f"Session 1 ATE {mm(rows['session2_extend']['session1_ate_m'])} mm
           "Changed world (synthetic room lap, 320x240, deterministic): session 1 maps the lap with",
           "chair_1 in place; session 2 plays frames 150-239 (where the camera sees the chair) of the",
           "lap after the chair was pushed 0.55 m away, and of the unchanged lap. Loaded map points",
-          "culled in session 2, all and those on the chair.", "",
+          "culled in session 2, all and those on the chair; points of session 1's dense map that",
+          "session 2 saw through (removed from the dense map it writes).", "",
           "| session 2 | loaded points | culled | chair points | chair points left | "
-          "multi-session ATE mm |", "| --- | --- | --- | --- | --- | --- |"]
+          "dense map points removed | multi-session ATE mm |",
+          "| --- | --- | --- | --- | --- | --- | --- |"]
 for name in ("synth_lap", "synth_lap_moved_chair"):
     r = rows[name]
     lines.append(f"| {name} | {r['loaded_points']} | {r['loaded_points_culled']} "
                  f"| {r['chair_points']} | {r['chair_points_left']} "
+                 f"| {number(r['dense_points_removed'], 'd')} "
                  f"| {mm(r['multi_session_ate_m'])} |")
 open(os.path.join(sys.argv[3], "map_sessions.md"), "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))
