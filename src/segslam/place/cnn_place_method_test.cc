@@ -63,7 +63,11 @@ TEST(CnnPlaceMethod, PooledUnionMaskIgnoresAMaskedRectangle) {
   // The same view with a "person" pasted in: only inside the rectangle do the images differ.
   const cv::Rect person(380, 120, 140, 300);
   cv::Mat occluded = frame.clone();
-  cv::randu(occluded(person), cv::Scalar::all(0), cv::Scalar::all(255));
+  // A generator of its own in OpenCV's initial state (the global one's in a fresh process), so
+  // that the noise does not depend on what ran before in the same process.
+  cv::RNG rng;
+  cv::Mat noise = occluded(person);
+  rng.fill(noise, cv::RNG::UNIFORM, cv::Scalar::all(0), cv::Scalar::all(255));
   cv::Mat static_mask(frame.size(), CV_8UC1, cv::Scalar(255));
   static_mask(person).setTo(0);
   auto bank = std::make_shared<CnnFeatureBank>(std::move(*extractor));

@@ -27,8 +27,8 @@ void ByteWriter::putF32(float value) { putU32(std::bit_cast<std::uint32_t>(value
 void ByteWriter::putF64(double value) { putU64(std::bit_cast<std::uint64_t>(value)); }
 
 void ByteWriter::putBytes(const void* data, std::size_t size) {
-  const char* begin = static_cast<const char*>(data);
-  bytes_.append(begin, size);
+  if (size == 0) return;  // data may be null (an empty cv::Mat)
+  bytes_.append(static_cast<const char*>(data), size);
 }
 
 void ByteWriter::putString(std::string_view text) {
@@ -52,7 +52,11 @@ float ByteReader::getF32() { return std::bit_cast<float>(getU32()); }
 
 double ByteReader::getF64() { return std::bit_cast<double>(getU64()); }
 
-void ByteReader::getBytes(void* out, std::size_t size) { std::memcpy(out, take(size), size); }
+void ByteReader::getBytes(void* out, std::size_t size) {
+  const char* data = take(size);
+  // An empty buffer (an empty cv::Mat) may have no address: memcpy must not see it.
+  if (size > 0) std::memcpy(out, data, size);
+}
 
 std::string ByteReader::getString() {
   const std::size_t size = getCount(1);
