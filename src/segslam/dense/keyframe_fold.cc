@@ -3,6 +3,7 @@
 #include <limits>
 #include <unordered_set>
 
+#include "segslam/dense/seen_through.h"
 #include "segslam/dense/voxel_key.h"
 
 namespace segslam::dense {
@@ -53,15 +54,17 @@ std::size_t nearestView(const Eigen::Isometry3d& culled,
 }
 
 void foldInto(KeyFrameCloud& into, const Eigen::Isometry3d& T_w_into, const KeyFrameCloud& from,
-              const Eigen::Isometry3d& T_w_from, double voxel_size) {
+              const Eigen::Isometry3d& T_w_from, double voxel_size, const core::Camera& camera) {
   const Eigen::Isometry3d T_into_from = T_w_into.inverse() * T_w_from;
   const double cell_size = kSameSurfaceVoxels * voxel_size;
   const std::unordered_set<std::uint64_t> occupied = occupiedCells(into, cell_size);
+  const FreeSpaceView free_space(camera, into);
   LabelledCloud unseen;
   for (const LabelledCloud* layer : {&from.static_points, &from.folded_points}) {
     const LabelledCloud moved = transformed(*layer, T_into_from);
     for (std::size_t i = 0; i < moved.size(); ++i) {
       if (nearOccupied(cellOf(moved.points[i], cell_size), occupied)) continue;
+      if (free_space.seesThrough(moved.points[i])) continue;
       unseen.add(moved.points[i], moved.colours[i], moved.labels[i], moved.instances[i]);
     }
   }

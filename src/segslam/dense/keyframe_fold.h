@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "segslam/core/camera.h"
 #include "segslam/dense/keyframe_cloud.h"
 
 namespace segslam::dense {
@@ -20,8 +21,10 @@ std::size_t nearestView(const Eigen::Isometry3d& culled,
 // neighbouring one (about 2-4 cm: the same surface seen again), are voxelised and added to
 // `into.folded_points`. Re-observed surfaces add nothing,
 // so `into` grows with the space the views saw, not with their number. `from`'s dynamic points
-// are dropped: they belong to the moment it was made.
+// are dropped: they belong to the moment it was made; so are its static points that `into`'s
+// depth (`camera`) sees through (FreeSpaceView): what stood there has gone, a person the masks
+// missed in `from` or an object moved since.
 void foldInto(KeyFrameCloud& into, const Eigen::Isometry3d& T_w_into, const KeyFrameCloud& from,
-              const Eigen::Isometry3d& T_w_from, double voxel_size);
+              const Eigen::Isometry3d& T_w_from, double voxel_size, const core::Camera& camera);
 
 }  // namespace segslam::dense

@@ -160,7 +160,8 @@ void MapBuilder::foldCulled(const core::Trajectory& live, bool only_older,
   }
   for (auto& [timestamp, stored] : culled) {
     StoredCloud& target = *target_clouds[nearestView(*stored.T_wc, target_poses)];
-    foldInto(target.cloud, *target.T_wc, stored.cloud, *stored.T_wc, options_.keyframe.voxel_size);
+    foldInto(target.cloud, *target.T_wc, stored.cloud, *stored.T_wc, options_.keyframe.voxel_size,
+             camera_);
   }
   lock.lock();
   clouds_.merge(targets);

@@ -365,24 +365,10 @@ void LocalMapper::localBundleAdjustment(map::KeyFrame& keyframe) {
 
 void LocalMapper::cullRedundantKeyFrames(map::KeyFrame& keyframe) {
   for (map::KeyFrame* candidate : keyframe.covisiblesWithWeight(0)) {
-    if (candidate->id == 0 || candidate->bad) continue;
-    int close_points = 0;
-    int redundant = 0;
-    const double close_depth = candidate->camera->close_depth_m;
-    for (const auto& [index, point] : candidate->validMapPoints()) {
-      if (candidate->depth[index] <= 0.0f || candidate->depth[index] > close_depth) continue;
-      ++close_points;
-      if (point->numObservations() <= 3) continue;
-      const int level = candidate->keypoints_un[index].octave;
-      int seen_at_finer_scale = 0;
-      for (const auto& [observer, other_index] : point->observations()) {
-        if (observer == candidate) continue;
-        if (observer->keypoints_un[other_index].octave <= level + 1) ++seen_at_finer_scale;
-        if (seen_at_finer_scale >= 3) break;
-      }
-      if (seen_at_finer_scale >= 3) ++redundant;
-    }
-    if (close_points > 0 && redundant > options_.redundant_keyframe_share * close_points) {
+    // Keyframes made after this one still wait in the queue (for their own mask, perhaps):
+    // their points are not integrated yet, so they are judged once mapped.
+    if (candidate->id == 0 || candidate->bad || candidate->id > keyframe.id) continue;
+    if (isRedundant(*candidate, options_.culling) || isCrowded(*candidate, options_.culling)) {
       candidate->setBad();
     }
   }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "segslam/map/map.h"
+#include "segslam/mapping/keyframe_culling.h"
 #include "segslam/mapping/keyframe_mask.h"
 #include "segslam/tracking/keyframe_sink.h"
 
@@ -24,7 +25,7 @@ struct LocalMapperOptions {
   // The new keyframe and its best covisible neighbours are optimised; capping their number
   // keeps a local BA near 100 ms when the whole map is covisible (a camera dwelling on a desk).
   int ba_max_keyframes = 20;
-  double redundant_keyframe_share = 0.9;
+  KeyFrameCullingOptions culling;
   bool cull_keyframes = true;
   // A keyframe waits in the queue for its own dynamic mask (addKeyFrameMask: a segmentation
   // network's output for its frame, which arrives after tracking made the keyframe) for at most

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 #include "segslam/util/elapsed_time.h"
@@ -194,6 +195,20 @@ LateOutput MaskStream::lateOutput(const Result& result, bool keyframe) const {
                                      result.object_depths, options_.refinement);
   }
   return late;
+}
+
+std::vector<LateOutput> MaskStream::takeRemainingOutputs() {
+  constexpr std::uint64_t kAfterEveryFrame = std::numeric_limits<std::uint64_t>::max();
+  for (Result& result : delayed_) collect(std::move(result), kAfterEveryFrame);
+  delayed_.clear();
+  std::vector<Result> finished;
+  {
+    std::lock_guard lock(mutex_);
+    finished = std::move(finished_);
+    finished_.clear();
+  }
+  for (Result& result : finished) collect(std::move(result), kAfterEveryFrame);
+  return takeLateOutputs();
 }
 
 std::vector<LateOutput> MaskStream::takeLateOutputs() {

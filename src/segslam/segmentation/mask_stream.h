@@ -133,6 +133,10 @@ class MaskStream {
   // The outputs collected since the last call that belong to frames handed on before, oldest
   // first; each is taken once.
   [[nodiscard]] std::vector<LateOutput> takeLateOutputs();
+  // After the last frame: takeLateOutputs() with every output still held back for its latency
+  // (synchronous) or finished since the last frame, so that a keyframe made in the last frames
+  // still gets its own mask.
+  [[nodiscard]] std::vector<LateOutput> takeRemainingOutputs();
 
   // Segmenter runs finished so far and their mean time.
   [[nodiscard]] int runs() const;

@@ -186,6 +186,20 @@ FrameMasks FrameMaskSource::masks(const io::RgbdFrame& frame, std::size_t index)
   return masks;
 }
 
+std::vector<segmentation::LateOutput> FrameMaskSource::remainingLateOutputs() {
+  std::vector<segmentation::LateOutput> remaining;
+  if (semantic_) {
+    for (auto& late : semantic_->takeRemainingOutputs()) {
+      if (!late.labels.empty()) late.labels = semantic_classes_->apply(late.labels);
+      remaining.push_back(std::move(late));
+    }
+  }
+  if (geometric_) {
+    for (auto& late : geometric_->takeRemainingOutputs()) remaining.push_back(std::move(late));
+  }
+  return remaining;
+}
+
 void FrameMaskSource::segmentKeyFrame(const io::RgbdFrame& frame, std::size_t index) {
   if (semantic_) semantic_->segmentKeyFrame(index, frame.rgb, frame.depth);
 }

@@ -84,6 +84,8 @@ class FrameMaskSource {
   // ahead of other frames: it comes back in a later frame's FrameMasks::late with `keyframe` set.
   // Nothing for the other sources.
   void segmentKeyFrame(const io::RgbdFrame& frame, std::size_t index);
+  // After the last frame: the outputs still on their way (keyframes' own masks among them).
+  [[nodiscard]] std::vector<segmentation::LateOutput> remainingLateOutputs();
   // Whether segmentKeyFrame() delivers outputs (a network is in use).
   [[nodiscard]] bool segmentsKeyFrames() const { return semantic_ != nullptr; }
 

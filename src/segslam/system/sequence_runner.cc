@@ -191,6 +191,21 @@ void finishMapFile(const MapFileOptions& options, const SlamSystem& slam,
   writeSessionLayers(map::readMapFile(*options.save), out_dir / "map_sessions");
 }
 
+// Network outputs of frames already tracked: a keyframe's own mask goes to local mapping and the
+// dense map, another frame's to the map points it shows on a person.
+void applyLateOutputs(const std::vector<segmentation::LateOutput>& outputs, SlamSystem& slam,
+                      MapKeyFrameFeed* map_feed, SequenceRunSummary& summary) {
+  for (const auto& late : outputs) {
+    if (late.keyframe) {
+      slam.addKeyFrameMask(late.frame_id, late.dynamic);
+      if (map_feed) map_feed->addOwnMask(late);
+    } else {
+      summary.points_culled_by_late_masks +=
+          slam.applyLateMask(late.frame_id, late.dynamic, late.depth);
+    }
+  }
+}
+
 nlohmann::json mapFileJson(const MapFileSummary& m) {
   nlohmann::json json = {{"session", m.session}, {"localize_only", m.localize_only}};
   json["first_tracked_frame"] =
@@ -269,15 +284,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       const io::RgbdFrame& frame = played.frame;
       const FrameMasks& frame_masks = played.masks;
       if (options.realtime) realtime_lag_ms.push_back(played.lag_ms);
-      for (const auto& late : frame_masks.late) {
-        if (late.keyframe) {
-          slam.addKeyFrameMask(late.frame_id, late.dynamic);
-          if (map_feed) map_feed->addOwnMask(late);
-        } else {
-          summary.points_culled_by_late_masks +=
-              slam.applyLateMask(late.frame_id, late.dynamic, late.depth);
-        }
-      }
+      applyLateOutputs(frame_masks.late, slam, map_feed ? &*map_feed : nullptr, summary);
       stats.push_back(
           slam.processFrame(frame.timestamp, frame.rgb, frame.depth, frame_masks.dynamic));
       stats.back().mask_ms = played.mask_ms;
@@ -298,6 +305,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
       }
     }
     summary.skipped_frames = damaged.count();
+    applyLateOutputs(masks.remainingLateOutputs(), slam, map_feed ? &*map_feed : nullptr, summary);
     if (map_feed) map_feed->flush();
     summary.tracking_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - first_frame).count();

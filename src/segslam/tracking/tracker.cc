@@ -64,7 +64,7 @@ TrackingResult Tracker::track(map::Frame frame) {
   // A frame that loses track tries relocalisation at once: the camera may have been carried
   // elsewhere, and the frame is as good a query as the next.
   const bool relocalised = !tracked && relocalise();
-  const bool ok = (tracked || relocalised) && trackLocalMap();
+  const bool ok = (tracked || relocalised) && trackLocalMap() && (relocalised || movedPlausibly());
 
   if (ok) {
     state_ = TrackingState::kOk;
@@ -92,6 +92,18 @@ TrackingResult Tracker::track(map::Frame frame) {
   result.state = state_;
   result.matches = inliers_;
   return result;
+}
+
+bool Tracker::movedPlausibly() const {
+  if (!last_.has_pose) return true;
+  if (withinMotionLimit(last_.T_cw, last_.timestamp, current_.T_cw, current_.timestamp,
+                        options_.motion_limit)) {
+    return true;
+  }
+  spdlog::debug("frame {}: pose {:.2f} m from the last frame's in {:.3f} s, refused", current_.id,
+                (current_.T_cw.inverse().translation() - last_.T_cw.inverse().translation()).norm(),
+                current_.timestamp - last_.timestamp);
+  return false;
 }
 
 void Tracker::startInRestoredMap() {

@@ -14,6 +14,7 @@
 #include "segslam/tracking/keyframe_decision.h"
 #include "segslam/tracking/keyframe_sink.h"
 #include "segslam/tracking/late_mask_check.h"
+#include "segslam/tracking/motion_limit.h"
 
 namespace segslam::tracking {
 
@@ -35,6 +36,9 @@ struct TrackerOptions {
   // Provisional map points (MapPoint::provisional) may refine a pose but not decide it.
   CheckedPoseOptions checked_pose;
   int min_inliers_after_relocalisation = 50;
+  // A tracked pose farther from the last frame's than a camera can move is refused: the frame is
+  // lost (and relocalised) rather than made a keyframe of.
+  MotionLimitOptions motion_limit;
   // A lost frame is matched against the keyframes that look most like it (by bag of words, given
   // a vocabulary: the camera may have been carried anywhere in the map), then against the most
   // recent ones (it may have lost track where it was, behind a person).
@@ -101,6 +105,7 @@ class Tracker {
   bool relocalise();
   [[nodiscard]] std::vector<std::shared_ptr<map::KeyFrame>> relocalisationCandidates() const;
   bool trackLocalMap();
+  [[nodiscard]] bool movedPlausibly() const;
   void addVisualOdometryPoints();
   int optimiseCurrentPose();
 
