@@ -77,6 +77,7 @@ def main():
     tenth = max(frames // 10, 1)
     tracking = [float(r["tracking_ms"]) for r in rows]
     medians = [statistics.median(tracking[k * tenth:(k + 1) * tenth]) for k in range(10)]
+    ends_of_tenths = [rows[min((k + 1) * tenth, frames) - 1] for k in range(10)]
     if len(progress) < 2:
         sys.exit(f"soak.py: {' '.join(command)} printed no progress lines")
     first_frame_at, tracking_end_at = progress[0][0], progress[-1][0]
@@ -118,6 +119,8 @@ def main():
         "rss_mb_after_tracking": max((mb for t, mb in samples if t > tracking_end_at),
                                      default=None),
         "tracking_median_ms_per_tenth": medians,
+        "keyframes_per_tenth": [int(r["live_keyframes"]) for r in ends_of_tenths],
+        "map_points_per_tenth": [int(r["live_map_points"]) for r in ends_of_tenths],
         "rss_samples": [[round(t, 2), round(mb, 1)] for t, mb in samples[::4]],
     }))
 

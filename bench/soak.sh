@@ -147,7 +147,7 @@ lines = [
     "RSS at the last frame minus after the first sweep (300 frames), per 1000 frames (frames placed",
     "in time by the run's progress lines). After tracking: the peak while the dense map is built",
     "and written once at the end. RSS over time: `soak.json`.", "",
-    "| run | frames | SLAM keyframes | map points | dense clouds | dense static points | after 1st sweep / at last frame [MB] | growth [MB / 1000 frames] | peak after tracking [MB] | tracking median 1st / last tenth [ms] | ratio | ATE [m] | map completeness / accuracy |",
+    "| run | frames | SLAM keyframes at the end / most at the end of a tenth | map points | dense clouds | dense static points | after 1st sweep / at last frame [MB] | growth [MB / 1000 frames] | peak after tracking [MB] | tracking median 1st / last tenth [ms] | ratio | ATE [m] | map completeness / accuracy |",
     "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |",
 ]
 for r in runs:
@@ -156,7 +156,8 @@ for r in runs:
     if r.get("map_completeness") is not None:
         quality = f"{100 * r['map_completeness']:.2f} / {100 * r['map_accuracy']:.2f} %"
     lines.append(
-        f"| {r['name']} | {r['frames']} | {r['keyframes']} | {r['map_points']} | "
+        f"| {r['name']} | {r['frames']} | {r['keyframes']} / {max(r['keyframes_per_tenth'])} | "
+        f"{r['map_points']} | "
         f"{r['dense_keyframes']} | {r['dense_static_points']} | "
         f"{f(r['rss_mb_after_first_sweep'], 0)} / {f(r['rss_mb_at_last_frame'], 0)} | "
         f"{f(r['rss_growth_mb_per_1000_frames'])} | {f(r['rss_mb_after_tracking'], 0)} | "

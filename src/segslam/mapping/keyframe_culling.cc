@@ -53,4 +53,8 @@ bool isCrowded(const map::KeyFrame& keyframe, const KeyFrameCullingOptions& opti
   return false;
 }
 
+bool isOrphaned(const map::KeyFrame& keyframe, const KeyFrameCullingOptions& options) {
+  return keyframe.validMapPoints().size() < static_cast<std::size_t>(options.orphaned_below_points);
+}
+
 }  // namespace segslam::mapping

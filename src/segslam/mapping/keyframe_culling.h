@@ -14,6 +14,8 @@ struct KeyFrameCullingOptions {
   double crowded_covisible_share = 0.5;
   double crowded_distance_m = 0.03;
   double crowded_angle_deg = 10.0;
+  // Orphaned: fewer valid map points than this.
+  int orphaned_below_points = 20;
 };
 
 // Whether local mapping may remove the keyframe (its covisible keyframes cover what it adds).
@@ -24,5 +26,10 @@ struct KeyFrameCullingOptions {
 [[nodiscard]] bool isRedundant(const map::KeyFrame& keyframe,
                                const KeyFrameCullingOptions& options);
 [[nodiscard]] bool isCrowded(const map::KeyFrame& keyframe, const KeyFrameCullingOptions& options);
+// A keyframe whose points were culled (seen through, on a late mask, failed local BA) anchors
+// neither tracking nor bundle adjustment, and no covisibility edge leads to it any more, so the
+// two rules above never judge it: in long runs with people such keyframes, many made while
+// tracking strayed, were 20 of 47 live ones, each holding its features and dense cloud.
+[[nodiscard]] bool isOrphaned(const map::KeyFrame& keyframe, const KeyFrameCullingOptions& options);
 
 }  // namespace segslam::mapping

@@ -117,5 +117,17 @@ TEST(KeyFrameCulling, ACulledTwinLeavesTheKeyFrame) {
   EXPECT_FALSE(isCrowded(*twins.keyframe, {}));
 }
 
+TEST(KeyFrameCulling, AKeyFrameWithFewPointsLeftIsOrphaned) {
+  SharedPoints scene(0);
+  EXPECT_FALSE(isOrphaned(*scene.keyframe, {}));
+  for (const auto& [index, point] : scene.keyframe->validMapPoints()) {
+    if (index >= 10) point->setBad();
+  }
+  EXPECT_TRUE(isOrphaned(*scene.keyframe, {})) << "10 points left";
+  KeyFrameCullingOptions never;
+  never.orphaned_below_points = 0;
+  EXPECT_FALSE(isOrphaned(*scene.keyframe, never));
+}
+
 }  // namespace
 }  // namespace segslam::mapping

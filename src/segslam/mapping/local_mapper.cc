@@ -14,6 +14,8 @@ namespace segslam::mapping {
 namespace {
 
 constexpr int kMinObservationsOfRecentPoint = 3;  // RGB-D: a point must be seen from 3 keyframes
+// A new point is judged (kept or culled) until this many keyframes after the one that made it.
+constexpr std::uint64_t kRecentPointKeyFrames = 3;
 constexpr double kMinFoundRatio = 0.25;
 
 // Keyframes and points of one local bundle adjustment, with the indices the solver uses.
@@ -258,7 +260,10 @@ void LocalMapper::processKeyFrame(const std::shared_ptr<map::KeyFrame>& keyframe
   if (!keyFrameReady() && map_.numKeyFrames() > 2) localBundleAdjustment(*keyframe);
   {
     std::lock_guard lock(map_.mutex);
-    if (options_.cull_keyframes) cullRedundantKeyFrames(*keyframe);
+    if (options_.cull_keyframes) {
+      cullRedundantKeyFrames(*keyframe);
+      cullOrphanedKeyFrames(*keyframe);
+    }
     map_.pruneBadMapPoints();
     if (keyframe->bad) return;
   }
@@ -284,7 +289,7 @@ void LocalMapper::cullRecentPoints(const map::KeyFrame& keyframe) {
       point->setBad();
       return true;
     }
-    return age >= 3;
+    return age >= kRecentPointKeyFrames;
   });
 }
 
@@ -371,6 +376,15 @@ void LocalMapper::cullRedundantKeyFrames(map::KeyFrame& keyframe) {
     if (isRedundant(*candidate, options_.culling) || isCrowded(*candidate, options_.culling)) {
       candidate->setBad();
     }
+  }
+}
+
+void LocalMapper::cullOrphanedKeyFrames(const map::KeyFrame& keyframe) {
+  for (const auto& candidate : map_.keyFrames()) {
+    // Until its points are judged, a keyframe's count of them says nothing; keyframes made after
+    // this one are not even mapped yet.
+    if (candidate->id == 0 || candidate->id + kRecentPointKeyFrames > keyframe.id) continue;
+    if (isOrphaned(*candidate, options_.culling)) candidate->setBad();
   }
 }
 

@@ -111,6 +111,8 @@ class LocalMapper : public tracking::KeyFrameSink {
   void fuseWithNeighbours(map::KeyFrame& keyframe);
   void localBundleAdjustment(map::KeyFrame& keyframe);
   void cullRedundantKeyFrames(map::KeyFrame& keyframe);
+  // Orphaned keyframes have no covisibility edge that would bring them before the rule above.
+  void cullOrphanedKeyFrames(const map::KeyFrame& keyframe);
 
   map::Map& map_;
   LocalMapperOptions options_;

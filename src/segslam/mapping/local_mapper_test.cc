@@ -95,5 +95,38 @@ TEST(LocalMapper, OnItsOwnThreadAWaitingKeyFrameIsMappedWhenItsMaskComes) {
   EXPECT_EQ(scene.culled(), 6);
 }
 
+// Keyframes 0-4 seeing the same row of points, but the points of keyframes 1 and 2 have all been
+// culled; keyframe 4 is mapped.
+struct OrphanedKeyFrames {
+  map::Map map;
+  LocalMapper mapper{map};
+  std::vector<std::shared_ptr<map::KeyFrame>> keyframes;
+
+  OrphanedKeyFrames() {
+    for (std::uint64_t i = 0; i < 5; ++i) keyframes.push_back(map.createKeyFrame(rowFrame(i)));
+    for (std::size_t k = 1; k < keyframes.size(); ++k) {
+      for (std::size_t i = 0; i < testing::kKeypoints; ++i) {
+        auto point = addPoint(map, *keyframes[k], i, {keyframes[0].get()});
+        if (k == 1 || k == 2) point->setBad();
+      }
+    }
+    for (const auto& keyframe : keyframes) keyframe->updateConnections();
+    mapper.insertKeyFrame(keyframes[4]);
+    mapper.processQueued();
+  }
+};
+
+TEST(LocalMapper, AKeyFrameWhosePointsWereAllCulledIsCulled) {
+  OrphanedKeyFrames scene;
+  EXPECT_TRUE(scene.keyframes[1]->bad);
+  EXPECT_FALSE(scene.keyframes[0]->bad);
+  EXPECT_FALSE(scene.keyframes[4]->bad);
+}
+
+TEST(LocalMapper, ARecentKeyFrameWithoutPointsIsKeptUntilItsPointsAreJudged) {
+  OrphanedKeyFrames scene;
+  EXPECT_FALSE(scene.keyframes[2]->bad) << "its points are judged for three keyframes";
+}
+
 }  // namespace
 }  // namespace segslam::mapping

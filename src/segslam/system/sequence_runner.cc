@@ -62,11 +62,13 @@ const char* stateName(tracking::TrackingState state) {
 
 void writeFrameLog(const std::filesystem::path& file, const std::vector<FrameStats>& stats) {
   auto out = fmt::output_file(file.string());
-  out.print("frame,timestamp,mask_ms,extraction_ms,tracking_ms,keypoints,matches,state,keyframe\n");
+  out.print(
+      "frame,timestamp,mask_ms,extraction_ms,tracking_ms,keypoints,matches,state,keyframe,"
+      "live_keyframes,live_map_points\n");
   for (const auto& s : stats) {
-    out.print("{},{:.6f},{:.3f},{:.3f},{:.3f},{},{},{},{}\n", s.frame_id, s.timestamp, s.mask_ms,
-              s.extraction_ms, s.tracking_ms, s.keypoints, s.matches, stateName(s.state),
-              s.keyframe ? 1 : 0);
+    out.print("{},{:.6f},{:.3f},{:.3f},{:.3f},{},{},{},{},{},{}\n", s.frame_id, s.timestamp,
+              s.mask_ms, s.extraction_ms, s.tracking_ms, s.keypoints, s.matches, stateName(s.state),
+              s.keyframe ? 1 : 0, s.live_keyframes, s.live_map_points);
   }
 }
 

@@ -95,6 +95,8 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
     stats.state = result.state;
     stats.matches = result.matches;
     stats.keyframe = result.new_keyframe;
+    stats.live_keyframes = map_.numKeyFrames();
+    stats.live_map_points = map_.numMapPoints();
     if (result.state == tracking::TrackingState::kOk) {
       stats.T_wc = tracker_.currentFrame().T_cw.inverse();
     }

@@ -62,6 +62,9 @@ struct FrameStats {
   int matches = 0;
   tracking::TrackingState state = tracking::TrackingState::kNotInitialised;
   bool keyframe = false;
+  // Live keyframes and map points after the frame: what a long session's memory follows.
+  std::size_t live_keyframes = 0;
+  std::size_t live_map_points = 0;
   // The pose tracking gave the frame (camera-to-world), before local mapping and loop closing
   // refine the map: what a live caller acts on. None when the frame is not tracked.
   std::optional<geometry::Pose> T_wc;
