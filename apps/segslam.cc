@@ -6,9 +6,11 @@
 
 #include "commands.h"
 #include "segslam/util/error.h"
+#include "segslam/util/heap_retention.h"
 #include "segslam/util/logging.h"
 
 int main(int argc, char** argv) {
+  segslam::util::boundHeapRetention();
   CLI::App app{"segslam: RGB-D SLAM for dynamic scenes", "segslam"};
   app.set_version_flag("--version", SEGSLAM_VERSION);
   app.require_subcommand(1);

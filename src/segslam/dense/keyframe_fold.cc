@@ -1,7 +1,8 @@
 #include "segslam/dense/keyframe_fold.h"
 
+#include <algorithm>
 #include <limits>
-#include <unordered_set>
+#include <vector>
 
 #include "segslam/dense/seen_through.h"
 #include "segslam/dense/voxel_key.h"
@@ -14,21 +15,27 @@ namespace {
 // cell of this many voxels, or the next, of a point the live keyframe holds is the same surface.
 constexpr double kSameSurfaceVoxels = 2.0;
 
-std::unordered_set<std::uint64_t> occupiedCells(const KeyFrameCloud& cloud, double cell_size) {
-  std::unordered_set<std::uint64_t> occupied;
+// Sorted, one allocation: a node-based set of ~40k cells per fold fragmented the map thread's
+// heap with small blocks.
+std::vector<std::uint64_t> occupiedCells(const KeyFrameCloud& cloud, double cell_size) {
+  std::vector<std::uint64_t> occupied;
   occupied.reserve(cloud.static_points.size() + cloud.folded_points.size());
   for (const LabelledCloud* layer : {&cloud.static_points, &cloud.folded_points}) {
-    for (const Eigen::Vector3f& p : layer->points) occupied.insert(voxelKey(p, cell_size));
+    for (const Eigen::Vector3f& p : layer->points) occupied.push_back(voxelKey(p, cell_size));
   }
+  std::sort(occupied.begin(), occupied.end());
+  occupied.erase(std::unique(occupied.begin(), occupied.end()), occupied.end());
   return occupied;
 }
 
-bool nearOccupied(const Eigen::Vector3i& cell, const std::unordered_set<std::uint64_t>& occupied) {
+// packCell puts z in the lowest bits, so the three cells along z around a cell have consecutive
+// keys: one search per (dx, dy).
+bool nearOccupied(const Eigen::Vector3i& cell, const std::vector<std::uint64_t>& occupied) {
   for (int dx = -1; dx <= 1; ++dx) {
     for (int dy = -1; dy <= 1; ++dy) {
-      for (int dz = -1; dz <= 1; ++dz) {
-        if (occupied.contains(packCell(cell + Eigen::Vector3i(dx, dy, dz)))) return true;
-      }
+      const std::uint64_t first = packCell(cell + Eigen::Vector3i(dx, dy, -1));
+      const auto found = std::lower_bound(occupied.begin(), occupied.end(), first);
+      if (found != occupied.end() && *found <= first + 2) return true;
     }
   }
   return false;
@@ -57,7 +64,7 @@ void foldInto(KeyFrameCloud& into, const Eigen::Isometry3d& T_w_into, const KeyF
               const Eigen::Isometry3d& T_w_from, double voxel_size, const core::Camera& camera) {
   const Eigen::Isometry3d T_into_from = T_w_into.inverse() * T_w_from;
   const double cell_size = kSameSurfaceVoxels * voxel_size;
-  const std::unordered_set<std::uint64_t> occupied = occupiedCells(into, cell_size);
+  const std::vector<std::uint64_t> occupied = occupiedCells(into, cell_size);
   const FreeSpaceView free_space(camera, into);
   LabelledCloud unseen;
   for (const LabelledCloud* layer : {&from.static_points, &from.folded_points}) {
@@ -68,7 +75,10 @@ void foldInto(KeyFrameCloud& into, const Eigen::Isometry3d& T_w_into, const KeyF
       unseen.add(moved.points[i], moved.colours[i], moved.labels[i], moved.instances[i]);
     }
   }
-  into.folded_points.append(voxelDownsample(unseen, voxel_size));
+  const LabelledCloud unseen_points = voxelDownsample(unseen, voxel_size);
+  // Grown exactly, not by doubling: the live keyframe keeps these points as long as it lives.
+  into.folded_points.reserve(into.folded_points.size() + unseen_points.size());
+  into.folded_points.append(unseen_points);
 }
 
 }  // namespace segslam::dense

@@ -105,7 +105,14 @@ LabelledCloud voxelDownsample(const LabelledCloud& cloud, double voxel_size) {
                   static_cast<std::uint32_t>(i)};
   }
   std::sort(entries.begin(), entries.end());
+  // Reserved exactly: a keyframe keeps its cloud for as long as it lives, and a vector grown by
+  // doubling would keep up to twice the memory its points need.
+  std::size_t voxels = 0;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (i == 0 || entries[i].voxel != entries[i - 1].voxel) ++voxels;
+  }
   LabelledCloud out;
+  out.reserve(voxels);
   const SortEntry* const end = entries.data() + entries.size();
   for (const SortEntry* voxel = entries.data(); voxel != end;) {
     const SortEntry* voxel_end = voxel;

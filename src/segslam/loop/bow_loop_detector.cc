@@ -5,8 +5,6 @@
 #include <unordered_map>
 #include <utility>
 
-#include "segslam/feature/static_mask.h"
-
 namespace segslam::loop {
 
 BowLoopDetector::BowLoopDetector(std::shared_ptr<const place::Vocabulary> vocabulary,
@@ -20,7 +18,7 @@ BowLoopDetector::Entry BowLoopDetector::entryOf(const map::KeyFrame& keyframe) c
   entry.keyframe = &keyframe;
   // Term frequency times IDF, as Vocabulary::transform weighs them.
   for (std::size_t i = 0; i < keyframe.keypoints.size(); ++i) {
-    if (feature::isDynamicAt(keyframe.dynamic_mask, keyframe.keypoints[i].pt)) continue;
+    if (keyframe.dynamic_mask.at(keyframe.keypoints[i].pt)) continue;
     const place::WordId word =
         vocabulary_->wordOf(keyframe.descriptors.ptr<std::uint8_t>(static_cast<int>(i)));
     const float idf = vocabulary_->idf(word);

@@ -51,7 +51,7 @@ void CnnLoopDetector::describe(const map::KeyFrame& keyframe) {
         fmt::format("CnnLoopDetector: keyframe {} has no image to describe", keyframe.id));
   }
   index_of_keyframe_[keyframe.id] = method_->size();
-  method_->add({keyframe.image, staticMaskOf(keyframe.dynamic_mask)});
+  method_->add({keyframe.image, staticMaskOf(keyframe.dynamic_mask.toMat())});
 }
 
 void CnnLoopDetector::add(const map::KeyFrame& keyframe) {

@@ -4,7 +4,6 @@
 #include <numeric>
 
 #include "segslam/feature/descriptor_distance.h"
-#include "segslam/feature/static_mask.h"
 
 namespace segslam::loop {
 
@@ -35,14 +34,14 @@ DescriptorVoteDetector::Signature DescriptorVoteDetector::signatureOf(
 double DescriptorVoteDetector::score(const Signature& a, const Signature& b) const {
   std::vector<const std::uint8_t*> b_rows;
   for (int j = 0; j < b.descriptors.rows; ++j) {
-    if (!feature::isDynamicAt(a.dynamic_mask, b.pixels[static_cast<std::size_t>(j)])) {
+    if (!a.dynamic_mask.at(b.pixels[static_cast<std::size_t>(j)])) {
       b_rows.push_back(b.descriptors.ptr<std::uint8_t>(j));
     }
   }
   int voters = 0;
   int votes = 0;
   for (int i = 0; i < a.descriptors.rows; ++i) {
-    if (feature::isDynamicAt(b.dynamic_mask, a.pixels[static_cast<std::size_t>(i)])) continue;
+    if (b.dynamic_mask.at(a.pixels[static_cast<std::size_t>(i)])) continue;
     ++voters;
     const std::uint8_t* row = a.descriptors.ptr<std::uint8_t>(i);
     int best = 256;

@@ -3,6 +3,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "segslam/feature/run_length_mask.h"
 #include "segslam/loop/loop_candidate_detector.h"
 
 namespace segslam::loop {
@@ -39,7 +40,7 @@ class DescriptorVoteDetector : public LoopCandidateDetector {
     std::uint64_t keyframe_id = 0;
     cv::Mat descriptors;              // signature_size x 32 CV_8U
     std::vector<cv::Point2f> pixels;  // raw keypoint positions, for the other's mask
-    cv::Mat dynamic_mask;             // empty or CV_8U, non-zero = dynamic
+    feature::RunLengthMask dynamic_mask;
   };
 
   [[nodiscard]] Signature signatureOf(const map::KeyFrame& keyframe) const;

@@ -41,8 +41,9 @@ TEST(DescriptorVoteDetector, KeypointsOnTheOthersDynamicAreaDoNotVote) {
   Signature b = a;
   b.keyframe_id = 2;
   // Everything left of column 150 moves in b: only a's keypoints right of it may vote.
-  b.dynamic_mask = cv::Mat::zeros(300, 300, CV_8U);
-  b.dynamic_mask.colRange(0, 150).setTo(255);
+  cv::Mat left_moves = cv::Mat::zeros(300, 300, CV_8U);
+  left_moves.colRange(0, 150).setTo(255);
+  b.dynamic_mask = feature::RunLengthMask(left_moves);
   EXPECT_DOUBLE_EQ(detector.score(a, b), 1.0);
   Signature unrelated_right = randomSignature(3, 4);
   unrelated_right.dynamic_mask = b.dynamic_mask;

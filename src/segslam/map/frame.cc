@@ -27,11 +27,22 @@ KeypointGrid::KeypointGrid(const std::vector<cv::KeyPoint>& keypoints, const cv:
     : bounds_(bounds),
       cell_width_(bounds.width / kCols),
       cell_height_(bounds.height / kRows),
-      cells_(kCols * kRows) {
+      cell_starts_(kCols * kRows + 1, 0) {
+  std::vector<int> cell_of(keypoints.size(), -1);
   for (std::size_t i = 0; i < keypoints.size(); ++i) {
     const int col = static_cast<int>((keypoints[i].pt.x - bounds_.x) / cell_width_);
     const int row = static_cast<int>((keypoints[i].pt.y - bounds_.y) / cell_height_);
-    if (col >= 0 && col < kCols && row >= 0 && row < kRows) cells_[row * kCols + col].push_back(i);
+    if (col < 0 || col >= kCols || row < 0 || row >= kRows) continue;
+    cell_of[i] = row * kCols + col;
+    ++cell_starts_[cell_of[i] + 1];
+  }
+  for (std::size_t cell = 1; cell < cell_starts_.size(); ++cell) {
+    cell_starts_[cell] += cell_starts_[cell - 1];
+  }
+  indices_.resize(cell_starts_.back());
+  std::vector<std::uint32_t> next(cell_starts_.begin(), cell_starts_.end() - 1);
+  for (std::size_t i = 0; i < keypoints.size(); ++i) {
+    if (cell_of[i] >= 0) indices_[next[cell_of[i]]++] = static_cast<std::uint32_t>(i);
   }
 }
 
@@ -44,7 +55,7 @@ std::vector<std::size_t> KeypointGrid::featuresInArea(const std::vector<cv::KeyP
                                                       double u, double v, double radius,
                                                       int min_level, int max_level) const {
   std::vector<std::size_t> found;
-  if (cells_.empty()) return found;
+  if (cell_starts_.empty()) return found;
   const int col_min = std::max(0, static_cast<int>((u - radius - bounds_.x) / cell_width_));
   const int col_max = std::min(kCols - 1, static_cast<int>((u + radius - bounds_.x) / cell_width_));
   const int row_min = std::max(0, static_cast<int>((v - radius - bounds_.y) / cell_height_));
@@ -54,7 +65,9 @@ std::vector<std::size_t> KeypointGrid::featuresInArea(const std::vector<cv::KeyP
   const double radius2 = radius * radius;
   for (int row = row_min; row <= row_max; ++row) {
     for (int col = col_min; col <= col_max; ++col) {
-      for (std::size_t i : cells_[row * kCols + col]) {
+      const int cell = row * kCols + col;
+      for (std::uint32_t k = cell_starts_[cell]; k < cell_starts_[cell + 1]; ++k) {
+        const std::size_t i = indices_[k];
         const cv::KeyPoint& kp = keypoints[i];
         if (kp.octave < min_level || (max_level >= 0 && kp.octave > max_level)) continue;
         const double du = kp.pt.x - u;

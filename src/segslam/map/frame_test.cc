@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+#include <tuple>
+
 namespace segslam::map {
 namespace {
 
@@ -42,6 +46,36 @@ TEST(Frame, RightCoordinateIsTheDisparityOfTheBaselineAtTheKeypointDepth) {
                     camera);
   EXPECT_FLOAT_EQ(frame.depth[0], 2.0f);
   EXPECT_NEAR(frame.right_u[0], 100.0 - 262.5 * kBaseline / 2.0, 1e-4);
+}
+
+TEST(KeypointGrid, FindsWhatABruteForceSearchFinds) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> x(0.0f, 639.9f);
+  std::uniform_real_distribution<float> y(0.0f, 479.9f);
+  std::vector<cv::KeyPoint> keypoints;
+  for (int i = 0; i < 2000; ++i) {
+    keypoints.emplace_back(x(random), y(random), 7.0f, -1.0f, 0.0f, i % 4);
+  }
+  const KeypointGrid grid(keypoints, cv::Rect2d(0.0, 0.0, 640.0, 480.0));
+  for (const auto& [u, v, radius] :
+       {std::tuple{320.0, 240.0, 15.0}, std::tuple{2.0, 3.0, 40.0}, std::tuple{639.0, 479.0, 8.0},
+        std::tuple{100.0, 400.0, 0.5}}) {
+    const std::vector<std::size_t> found = grid.featuresInArea(keypoints, u, v, radius, 1, 2);
+    std::vector<std::size_t> expected;
+    for (std::size_t i = 0; i < keypoints.size(); ++i) {
+      const cv::Point2f& p = keypoints[i].pt;
+      const double du = p.x - u;
+      const double dv = p.y - v;
+      if (keypoints[i].octave >= 1 && keypoints[i].octave <= 2 &&
+          du * du + dv * dv < radius * radius) {
+        expected.push_back(i);
+      }
+    }
+    std::vector<std::size_t> sorted = found;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted, expected) << "around " << u << ", " << v;
+  }
+  EXPECT_TRUE(KeypointGrid().featuresInArea(keypoints, 320.0, 240.0, 50.0).empty());
 }
 
 }  // namespace

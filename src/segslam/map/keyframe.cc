@@ -175,7 +175,7 @@ void KeyFrame::releaseFeatures() {
   std::vector<float>().swap(depth);
   std::vector<float>().swap(right_u);
   descriptors.release();
-  dynamic_mask.release();
+  dynamic_mask = {};
   image.release();
   grid = KeypointGrid();
   std::vector<std::shared_ptr<MapPoint>>().swap(map_points_);

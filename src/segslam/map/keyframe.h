@@ -6,6 +6,7 @@
 #include <set>
 #include <vector>
 
+#include "segslam/feature/run_length_mask.h"
 #include "segslam/map/frame.h"
 #include "segslam/map/map_point.h"
 
@@ -66,7 +67,7 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   std::vector<float> depth;
   std::vector<float> right_u;
   cv::Mat descriptors;
-  cv::Mat dynamic_mask;
+  feature::RunLengthMask dynamic_mask;  // the frame's (dilated), with late masks added
   cv::Mat image;  // the frame's colour image until the loop closer has described the keyframe
   KeypointGrid grid;
   geometry::Pose T_cw;

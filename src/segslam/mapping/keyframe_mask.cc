@@ -20,8 +20,7 @@ OwnMaskOutcome applyOwnMask(map::KeyFrame& keyframe, const cv::Mat& dilated_mask
     point->eraseObservation(&keyframe);
     ++outcome.observations_dropped;
   }
-  keyframe.dynamic_mask =
-      keyframe.dynamic_mask.empty() ? dilated_mask.clone() : (keyframe.dynamic_mask | dilated_mask);
+  keyframe.dynamic_mask = keyframe.dynamic_mask.united(dilated_mask);
   return outcome;
 }
 

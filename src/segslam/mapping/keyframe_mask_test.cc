@@ -58,10 +58,10 @@ TEST(KeyFrameOwnMask, AnOlderPointLosesTheObservationAndIsCulledWhenASecondKeyFr
 
 TEST(KeyFrameOwnMask, JoinsTheKeyFramesMask) {
   KeyFrameWithOlderPoints scene;
-  scene.keyframe->dynamic_mask = maskOverKeypoints(30, 32);
+  scene.keyframe->dynamic_mask = feature::RunLengthMask(maskOverKeypoints(30, 32));
   const cv::Mat own = maskOverKeypoints(0, 2);
   applyOwnMask(*scene.keyframe, own);
-  EXPECT_EQ(cv::countNonZero(scene.keyframe->dynamic_mask),
+  EXPECT_EQ(cv::countNonZero(scene.keyframe->dynamic_mask.toMat()),
             cv::countNonZero(own) + cv::countNonZero(maskOverKeypoints(30, 32)));
   EXPECT_EQ(applyOwnMask(*scene.keyframe, cv::Mat()).points_culled, 0) << "no mask, no change";
 }
