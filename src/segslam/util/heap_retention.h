@@ -8,7 +8,8 @@ namespace segslam::util {
 // top, and a SLAM run's RSS crept up for minutes. Fixed thresholds keep blocks up to 32 MB in
 // the heaps (no page faults for every image, as a low mmap threshold would cost) and give free
 // space beyond 512 kB at a heap's top back to the system. Call once, before threads start.
-// Returns false where the C library is not glibc or refused a setting.
+// Returns false where malloc is not glibc's (another C library, a sanitizer's allocator) or it
+// refused a setting.
 bool boundHeapRetention();
 
 }  // namespace segslam::util
