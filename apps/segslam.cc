@@ -11,6 +11,7 @@
 
 int main(int argc, char** argv) {
   segslam::util::boundHeapRetention();
+  const segslam::util::HeapTrimmer heap_trimmer;
   CLI::App app{"segslam: RGB-D SLAM for dynamic scenes", "segslam"};
   app.set_version_flag("--version", SEGSLAM_VERSION);
   app.require_subcommand(1);
