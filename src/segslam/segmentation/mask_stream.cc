@@ -10,14 +10,6 @@
 
 namespace segslam::segmentation {
 
-namespace {
-
-StreamFrame copyOf(const StreamFrame& frame) {
-  return {frame.id, frame.bgr.clone(), frame.depth.clone()};
-}
-
-}  // namespace
-
 MaskStream::MaskStream(Segment segment, MaskStreamOptions options,
                        std::shared_ptr<MaskPropagator> propagator)
     : segment_(std::move(segment)),
@@ -89,8 +81,9 @@ void MaskStream::submit(SegmentationJob job) {
   {
     std::lock_guard lock(mutex_);
     if (busy_ || pending_ || !keyframe_jobs_.empty()) return;
-    pending_ =
-        SegmentationJob{copyOf(job.previous), copyOf(job.current), job.known_dynamic.clone()};
+    // The frames are shared (the caller writes no more into them); the mask of another method is
+    // copied, as its owner may still add to it.
+    pending_ = SegmentationJob{job.previous, job.current, job.known_dynamic.clone()};
   }
   last_submitted_ = job.current.id;
   changed_.notify_all();
@@ -137,9 +130,7 @@ void MaskStream::segmentSynchronously(const SegmentationJob& job) {
   if (!last_synchronous_run_ ||
       frame_id - *last_synchronous_run_ >= static_cast<std::uint64_t>(options_.interval)) {
     last_synchronous_run_ = frame_id;
-    Result result = run(job);
-    if (options_.latency_frames > 0) result.depth = result.depth.clone();
-    delayed_.push_back(std::move(result));
+    delayed_.push_back(run(job));
   }
   // The first output is used at once, as the threaded stream waits for it.
   const auto latency = static_cast<std::uint64_t>(options_.latency_frames);
@@ -157,7 +148,7 @@ void MaskStream::segmentKeyFrame(std::uint64_t frame_id, const cv::Mat& bgr, con
   keyframes_asked_.insert(frame_id);
   const bool on_its_way = last_submitted_ == frame_id || last_synchronous_run_ == frame_id;
   if (on_its_way) return;
-  SegmentationJob job{StreamFrame{}, copyOf(StreamFrame{frame_id, bgr, depth}), cv::Mat()};
+  SegmentationJob job{StreamFrame{}, StreamFrame{frame_id, bgr, depth}, cv::Mat()};
   if (options_.synchronous) {
     // A keyframe's output takes the place of the next scheduled one, as the network's thread
     // would be busy with it; it is the newest frame, so `delayed_` stays in frame order.

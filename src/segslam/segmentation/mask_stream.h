@@ -115,7 +115,9 @@ class MaskStream {
 
   // Masks for this frame (frames in increasing id order; bgr CV_8UC3; depth CV_32FC1 metres or
   // empty). With depth, the dynamic mask is snapped to the objects' depth outlines. Labels are
-  // empty when the options do not carry them.
+  // empty when the options do not carry them. The images are shared with the segmenter's thread,
+  // not copied (two frames of copies per job were 4 MB, and a queued keyframe's 2 MB): the
+  // caller must not write into them afterwards, i.e. give fresh images for every frame.
   SemanticMasks masksFor(std::uint64_t frame_id, const cv::Mat& bgr, const cv::Mat& depth,
                          const cv::Mat& known_dynamic = cv::Mat());
 
@@ -127,7 +129,7 @@ class MaskStream {
   // points wait for it), ahead of every other frame, keyframes in order. The output comes
   // back once, through takeLateOutputs() with `keyframe` set: as soon as it is finished, or in
   // synchronous mode `latency_frames` frames after its frame. A frame whose output is already
-  // there or on its way is not segmented twice.
+  // there or on its way is not segmented twice. The images are shared, as for masksFor().
   void segmentKeyFrame(std::uint64_t frame_id, const cv::Mat& bgr, const cv::Mat& depth);
 
   // The outputs collected since the last call that belong to frames handed on before, oldest
