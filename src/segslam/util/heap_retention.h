@@ -23,7 +23,7 @@ bool boundHeapRetention();
 // a heap's top: images and solver blocks freed below a block still in use stayed resident, 15-25
 // MB across the heaps of a SLAM run, and the sum crept up as rarer peaks of images in flight came
 // (static 9-sweep soak: 14 MB after the first sweep). A trim takes ~5 ms; a page given back costs
-// a fault when reused, so trims are seconds apart rather than after every frame. Does nothing
+// a fault when reused, so trims are a second apart rather than after every frame. Does nothing
 // (active() false) where malloc is not glibc's.
 class HeapTrimmer {
  public:
