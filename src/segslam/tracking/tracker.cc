@@ -197,6 +197,7 @@ bool Tracker::relocalise() {
   // motion blur, and the camera stayed lost where the local map would have found it.
   if (optimiseCurrentPose() < options_.min_inliers) return false;
   last_relocalisation_frame_id_ = current_.id;
+  reference_keyframe_ = current_.reference_keyframe;
   spdlog::info("frame {}: relocalised against keyframe {}", current_.id,
                current_.reference_keyframe->id);
   return true;
@@ -446,6 +447,10 @@ void Tracker::reanchorLastFrame() {
 }
 
 void Tracker::recordPose() {
+  // A frame whose points no live keyframe observes (matched to visual-odometry points only, the
+  // keyframes that saw the rest culled) gets no reference from the local map's vote
+  // (updateLocalKeyFrames): it is placed relative to the tracker's reference.
+  if (!current_.reference_keyframe) current_.reference_keyframe = reference_keyframe_;
   const auto& reference = current_.reference_keyframe;
   records_.push_back(
       {current_.timestamp, reference.get(), current_.T_cw * reference->T_cw.inverse()});

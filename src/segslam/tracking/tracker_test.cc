@@ -1,0 +1,83 @@
+#include "segslam/tracking/tracker.h"
+
+#include <gtest/gtest.h>
+
+#include <mutex>
+#include <opencv2/imgproc.hpp>
+
+#include "segslam/feature/orb_extractor.h"
+#include "segslam/synth/sequence.h"
+#include "segslam/testing/synth_sequences.h"
+
+namespace segslam::tracking {
+namespace {
+
+// A local mapper that maps nothing and is three keyframes behind, so that tracking makes no
+// keyframe after the first: the test decides what local mapping would have done.
+class BusyMapper : public KeyFrameSink {
+ public:
+  void insertKeyFrame(std::shared_ptr<map::KeyFrame> keyframe) override {
+    keyframes.push_back(std::move(keyframe));
+  }
+  [[nodiscard]] bool isIdle() const override { return false; }
+  [[nodiscard]] std::size_t queuedKeyFrames() const override { return 3; }
+
+  std::vector<std::shared_ptr<map::KeyFrame>> keyframes;
+};
+
+// The first frames of the synthetic room lap, made into tracking frames as SlamSystem makes them.
+class TrackerOnARoomLap : public ::testing::Test {
+ protected:
+  TrackerOnARoomLap() : sequence_(testing::noisyRoomLap(300)) {}
+
+  map::Frame frameAt(int index) {
+    const synth::FrameImages images = sequence_.renderFrame(index);
+    cv::Mat gray;
+    cv::cvtColor(images.rgb, gray, cv::COLOR_BGR2GRAY);
+    cv::Mat depth_m;
+    images.depth.convertTo(depth_m, CV_32F, 1.0 / sequence_.camera().depth_factor);
+    std::vector<cv::KeyPoint> keypoints;
+    cv::Mat descriptors;
+    extractor_.extract(gray, cv::Mat(), keypoints, descriptors);
+    return map::Frame(static_cast<std::uint64_t>(index), sequence_.timestamp(index),
+                      std::move(keypoints), descriptors, depth_m, cv::Mat(), camera_);
+  }
+
+  TrackingResult track(Tracker& tracker, int index) {
+    map::Frame frame = frameAt(index);
+    std::lock_guard lock(map_.mutex);
+    return tracker.track(std::move(frame));
+  }
+
+  synth::SyntheticSequence sequence_;
+  feature::OrbExtractor extractor_;
+  std::shared_ptr<const map::FrameCamera> camera_ = std::make_shared<map::FrameCamera>(
+      sequence_.camera(), map::kDefaultVirtualBaselineM, 40.0, feature::ScaleLevels(8, 1.2));
+  map::Map map_;
+  BusyMapper sink_;
+};
+
+// Local mapping may cull the keyframes that observe a frame's points while the frame waits to be
+// tracked (or its points may all be visual-odometry points, observed by none): no keyframe wins
+// the local map's vote for the frame's reference. It keeps the tracker's reference then, so that
+// its pose is recorded and resolved like any other.
+TEST_F(TrackerOnARoomLap, FrameWhosePointsNoLiveKeyFrameObservesIsRecordedAgainstTheLastReference) {
+  Tracker tracker(map_, sink_);
+  for (int index = 0; index < 4; ++index) {
+    ASSERT_EQ(track(tracker, index).state, TrackingState::kOk) << "frame " << index;
+  }
+  const map::KeyFrame* last_reference = tracker.frameRecords().back().reference;
+  const std::size_t records = tracker.frameRecords().size();
+  for (const auto& keyframe : map_.keyFrames()) keyframe->bad = true;
+
+  const TrackingResult result = track(tracker, 4);
+
+  ASSERT_EQ(result.state, TrackingState::kOk);
+  EXPECT_FALSE(result.new_keyframe);
+  ASSERT_EQ(tracker.frameRecords().size(), records + 1);
+  EXPECT_EQ(tracker.frameRecords().back().reference, last_reference);
+  EXPECT_EQ(tracker.currentFrame().reference_keyframe.get(), last_reference);
+}
+
+}  // namespace
+}  // namespace segslam::tracking
