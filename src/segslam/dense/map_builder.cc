@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
+#include <map>
+#include <vector>
 
 #include "segslam/dense/keyframe_fold.h"
 #include "segslam/dense/seen_through.h"
@@ -121,7 +124,7 @@ void MapBuilder::makeFront(std::unique_lock<std::mutex>& lock) {
       pose = it->second;
       poses_before_cloud_.erase(it);
     }
-    clouds_[keyframe.timestamp] = {keyframe.id, std::move(cloud), pose};
+    clouds_[keyframe.timestamp] = {keyframe.id, PackedKeyFrameCloud(cloud), pose};
   }
   timings_.back_projection += projected - start;
   timings_.keyframe_voxels += end - projected;
@@ -158,10 +161,17 @@ void MapBuilder::foldCulled(const core::Trajectory& live, bool only_older,
     target_poses.push_back(*stored.T_wc);
     target_clouds.push_back(&stored);
   }
-  for (auto& [timestamp, stored] : culled) {
-    StoredCloud& target = *target_clouds[nearestView(*stored.T_wc, target_poses)];
-    foldInto(target.cloud, *target.T_wc, stored.cloud, *stored.T_wc, options_.keyframe.voxel_size,
-             camera_);
+  std::map<StoredCloud*, std::vector<const StoredCloud*>> folded_into;
+  for (const auto& [timestamp, stored] : culled) {
+    folded_into[target_clouds[nearestView(*stored.T_wc, target_poses)]].push_back(&stored);
+  }
+  for (const auto& [target, sources] : folded_into) {
+    KeyFrameCloud cloud = target->cloud.unpacked();
+    for (const StoredCloud* source : sources) {
+      foldInto(cloud, *target->T_wc, source->cloud.unpacked(), *source->T_wc,
+               options_.keyframe.voxel_size, camera_);
+    }
+    target->cloud = PackedKeyFrameCloud(cloud);
   }
   lock.lock();
   clouds_.merge(targets);
@@ -170,12 +180,15 @@ void MapBuilder::foldCulled(const core::Trajectory& live, bool only_older,
 MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe_poses,
                                                 ObjectMapBuilder& objects) const {
   WorldClouds world;
+  // The clouds unpacked, kept only while an earlier map needs them for its free-space views.
+  std::deque<KeyFrameCloud> unpacked;
   std::vector<std::pair<Eigen::Isometry3d, const KeyFrameCloud*>> views;
   for (const auto& pose : keyframe_poses.poses()) {
     const auto it = clouds_.lower_bound(pose.timestamp - 1e-4);
     if (it == clouds_.end() || it->first > pose.timestamp + 1e-4) continue;
-    const KeyFrameCloud& cloud = it->second.cloud;
-    views.emplace_back(pose.T_wc, &cloud);
+    if (!earlier_) unpacked.clear();
+    const KeyFrameCloud& cloud = unpacked.emplace_back(it->second.cloud.unpacked());
+    if (earlier_) views.emplace_back(pose.T_wc, &cloud);
     const LabelledCloud static_points = transformed(cloud.static_points, pose.T_wc);
     const LabelledCloud dynamic_points = transformed(cloud.dynamic_points, pose.T_wc);
     const auto start = std::chrono::steady_clock::now();

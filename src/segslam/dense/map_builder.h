@@ -14,6 +14,7 @@
 #include "segslam/dense/dense_map.h"
 #include "segslam/dense/keyframe_cloud.h"
 #include "segslam/dense/object_map_builder.h"
+#include "segslam/dense/packed_cloud.h"
 
 namespace segslam::dense {
 
@@ -36,9 +37,10 @@ struct MapTimings {
 };
 
 // Builds the dense map of a run off the tracking thread. Keyframes are handed over as they are
-// made; a worker thread turns each into a voxelised cloud in its own camera frame. The world
-// map is assembled only in build(), from whatever keyframe poses are final then, so a loop
-// correction needs nothing but another build() with the corrected poses.
+// made; a worker thread turns each into a voxelised cloud in its own camera frame, kept packed
+// (PackedKeyFrameCloud: a long session holds one per live keyframe). The world map is assembled
+// only in build(), from whatever keyframe poses are final then, so a loop correction needs
+// nothing but another build() with the corrected poses.
 class MapBuilder {
  public:
   MapBuilder(const core::Camera& camera, MapBuilderOptions options);
@@ -82,7 +84,7 @@ class MapBuilder {
   };
   struct StoredCloud {
     std::uint64_t id = 0;
-    KeyFrameCloud cloud;
+    PackedKeyFrameCloud cloud;
     std::optional<Eigen::Isometry3d> T_wc;  // its latest pose from setLiveKeyFrames
   };
   using Clouds = std::map<double, StoredCloud>;  // by timestamp
