@@ -68,40 +68,38 @@ void MapBuilder::finish() {
   // What is still queued is made here rather than by the map thread: that thread runs at a low
   // priority, and now nothing else is waiting for the CPU.
   while (!queue_.empty()) makeFront(lock);
-  changed_.wait(lock, [this] { return queue_.empty() && !busy_; });
-  if (pending_live_) {
-    const core::Trajectory live = std::move(*pending_live_);
-    pending_live_.reset();
-    busy_ = true;
-    foldCulled(live, true, lock);
-    busy_ = false;
-    changed_.notify_all();
-  }
+  changed_.wait(lock, [this] { return queue_.empty() && working_ == 0; });
+  if (pending_live_) foldPending(lock);
   if (error_) std::rethrow_exception(error_);
+}
+
+bool MapBuilder::foldDue() const { return pending_live_ && working_ == 0; }
+
+void MapBuilder::foldPending(std::unique_lock<std::mutex>& lock) {
+  const core::Trajectory live = std::move(*pending_live_);
+  pending_live_.reset();
+  foldCulled(live, true, lock);
 }
 
 void MapBuilder::work() {
   util::lowerThisThreadsPriority(options_.thread_niceness);
   std::unique_lock lock(mutex_);
   while (true) {
-    changed_.wait(lock, [this] { return stopping_ || !queue_.empty() || pending_live_; });
-    if (queue_.empty() && !pending_live_) return;  // stopping, nothing left
-    busy_ = true;
+    changed_.wait(lock, [this] { return stopping_ || !queue_.empty() || foldDue(); });
     if (!queue_.empty()) {
       makeFront(lock);
+    } else if (foldDue()) {
+      foldPending(lock);
     } else {
-      const core::Trajectory live = std::move(*pending_live_);
-      pending_live_.reset();
-      foldCulled(live, true, lock);
+      return;  // stopping, nothing left
     }
-    busy_ = false;
-    changed_.notify_all();
   }
 }
 
 void MapBuilder::makeFront(std::unique_lock<std::mutex>& lock) {
   QueuedKeyFrame keyframe = std::move(queue_.front());
   queue_.pop_front();
+  ++working_;
   lock.unlock();
   const double start = util::thisThreadCpuSeconds();
   double projected = start;
@@ -128,6 +126,8 @@ void MapBuilder::makeFront(std::unique_lock<std::mutex>& lock) {
   }
   timings_.back_projection += projected - start;
   timings_.keyframe_voxels += end - projected;
+  --working_;
+  changed_.notify_all();
 }
 
 void MapBuilder::foldCulled(const core::Trajectory& live, bool only_older,
@@ -154,6 +154,7 @@ void MapBuilder::foldCulled(const core::Trajectory& live, bool only_older,
     clouds_.merge(targets);
     return;
   }
+  ++working_;
   lock.unlock();
   std::vector<Eigen::Isometry3d> target_poses;
   std::vector<StoredCloud*> target_clouds;
@@ -175,6 +176,8 @@ void MapBuilder::foldCulled(const core::Trajectory& live, bool only_older,
   }
   lock.lock();
   clouds_.merge(targets);
+  --working_;
+  changed_.notify_all();
 }
 
 MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe_poses,

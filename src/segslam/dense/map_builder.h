@@ -90,6 +90,11 @@ class MapBuilder {
   using Clouds = std::map<double, StoredCloud>;  // by timestamp
 
   void work();
+  // A live set is folded only once no cloud is being made: a keyframe whose cloud lands after the
+  // fold would miss being culled by it.
+  [[nodiscard]] bool foldDue() const;
+  // Folds the latest live set (pending_live_), unlocking `lock` meanwhile.
+  void foldPending(std::unique_lock<std::mutex>& lock);
   // Folds the clouds of keyframes missing from `live` (older than its newest keyframe when
   // `only_older`) into the live ones; the folding itself runs with `lock` released.
   void foldCulled(const core::Trajectory& live, bool only_older,
@@ -113,7 +118,7 @@ class MapBuilder {
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<QueuedKeyFrame> queue_;
-  bool busy_ = false;
+  int working_ = 0;  // threads making a cloud or folding with the lock released
   bool stopping_ = false;
   Clouds clouds_;
   std::optional<core::Trajectory> pending_live_;
