@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 
@@ -45,6 +46,16 @@ void printSummary(const CheckOptions& options, const io::TumDataset& dataset,
   fmt::print(
       "  frames        {} checked, {:.2f} s of recording at {:.1f} Hz ({:.0f} frames/s read)\n",
       check.frames, check.duration_s, check.mean_frame_rate, check.frames / seconds);
+  constexpr std::size_t kAbsentImagesNamed = 5;
+  const auto& absent = check.absent_images;
+  for (std::size_t i = 0; i < std::min(absent.size(), kAbsentImagesNamed); ++i) {
+    fmt::print("  absent        {}:{}: {} is not in the dataset: its frame is left out\n",
+               absent[i].list_file.string(), absent[i].line, absent[i].path.string());
+  }
+  if (absent.size() > kAbsentImagesNamed) {
+    fmt::print("  absent        {} more (dataset_check.json names them all)\n",
+               absent.size() - kAbsentImagesNamed);
+  }
   if (check.skipped_frames > 0) {
     fmt::print("  damaged       {} frames skipped for damaged images (the log names them)\n",
                check.skipped_frames);
@@ -56,8 +67,12 @@ void printSummary(const CheckOptions& options, const io::TumDataset& dataset,
     fmt::print("  masks         dynamic pixels in {} frames, {:.2f} % of pixels on average\n",
                check.frames_with_dynamic_pixels, 100.0 * check.mean_dynamic_share);
   }
-  fmt::print("  ground truth  {} poses, {} frames associated\n", check.ground_truth_poses,
+  fmt::print("  ground truth  {} poses, {} frames associated", check.ground_truth_poses,
              check.frames_with_ground_truth);
+  if (check.ground_truth_poses > 0) {
+    fmt::print(" ({})", io::describeGroundTruthFrame(check.ground_truth_frame));
+  }
+  fmt::print("\n");
   fmt::print("  outputs       {}\n", std::filesystem::absolute(options.out_dir).string());
 }
 

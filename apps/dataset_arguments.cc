@@ -18,6 +18,20 @@ void addDatasetOptions(CLI::App& command, DatasetArguments& arguments) {
                   "Max colour/depth timestamp difference for association (s)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  addGroundTruthFrameOption(command, arguments.ground_truth_frame);
+}
+
+void addGroundTruthFrameOption(CLI::App& command, std::string& ground_truth_frame) {
+  std::vector<std::string> names = io::groundTruthFrameNames();
+  names.insert(names.begin(), "auto");
+  command
+      .add_option("--gt-frame", ground_truth_frame,
+                  "What the ground truth holds poses of: camera, or bonn-markers (the Bonn RGB-D "
+                  "Dynamic dataset's, converted to the camera's); auto: bonn-markers for the "
+                  "groundtruth.txt of a folder named like a Bonn sequence (rgbd_bonn_*), else "
+                  "camera")
+      ->check(CLI::IsMember(names))
+      ->capture_default_str();
 }
 
 io::TumDataset openDataset(const DatasetArguments& arguments) {
@@ -25,6 +39,7 @@ io::TumDataset openDataset(const DatasetArguments& arguments) {
   options.max_time_difference = arguments.max_time_difference;
   if (!arguments.camera_file.empty()) options.camera_file = arguments.camera_file;
   if (!arguments.camera_preset.empty()) options.camera_preset = arguments.camera_preset;
+  options.ground_truth_frame = io::parseGroundTruthFrame(arguments.ground_truth_frame);
   return io::TumDataset::open(arguments.dataset, options);
 }
 
@@ -45,6 +60,7 @@ void addRunFolderOptions(CLI::App& command, DatasetArguments& arguments,
                   "Max colour/depth timestamp difference for association (s)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  addGroundTruthFrameOption(command, arguments.ground_truth_frame);
 }
 
 io::TumDataset openRunDataset(DatasetArguments arguments, const std::filesystem::path& run_dir) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.h"
+#include "dataset_arguments.h"
 #include "segslam/eval/evaluation_plots.h"
 #include "segslam/eval/evaluation_report.h"
 #include "segslam/eval/trajectory_evaluation.h"
@@ -32,7 +33,17 @@ struct TrajectoryEvalSettings {
   std::string plots;
   std::optional<std::string> json;  // present: JSON wanted; empty: on stdout
   std::string aligned_out;
+  std::string ground_truth_frame = "auto";
 };
+
+// As --gt-frame says; by default the marker poses of a groundtruth.txt in a Bonn sequence's
+// folder, as published, and camera poses for any other file.
+io::GroundTruthFrame groundTruthFrame(const TrajectoryEvalSettings& s) {
+  if (const auto frame = io::parseGroundTruthFrame(s.ground_truth_frame)) return *frame;
+  const std::filesystem::path file = std::filesystem::absolute(s.ground_truth);
+  if (file.filename() != "groundtruth.txt") return io::GroundTruthFrame::kCamera;
+  return io::groundTruthFrameForDataset(file.parent_path());
+}
 
 eval::TrajectoryEvaluationOptions evaluationOptions(const TrajectoryEvalSettings& s) {
   eval::TrajectoryEvaluationOptions options;
@@ -56,8 +67,8 @@ void createOutputFolders(const TrajectoryEvalSettings& s) {
 
 void evaluateTrajectory(const TrajectoryEvalSettings& s) {
   createOutputFolders(s);
-  const auto evaluation =
-      eval::evaluateTrajectoryFiles(s.ground_truth, s.estimate, evaluationOptions(s));
+  const auto evaluation = eval::evaluateTrajectoryFiles(s.ground_truth, s.estimate,
+                                                        evaluationOptions(s), groundTruthFrame(s));
   const bool json_on_stdout = s.json && s.json->empty();
   // JSON on stdout replaces the table, so the output stays parseable.
   if (json_on_stdout) {
@@ -85,6 +96,7 @@ void addTrajectoryOptions(CLI::App& command, TrajectoryEvalSettings& s) {
   command.add_option("--gt", s.ground_truth, "Ground-truth trajectory, TUM format")
       ->type_name("FILE");
   command.add_option("--est", s.estimate, "Estimated trajectory, TUM format")->type_name("FILE");
+  addGroundTruthFrameOption(command, s.ground_truth_frame);
   command.add_option("--max-diff", s.max_difference, "ATE: largest time difference to match [s]")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

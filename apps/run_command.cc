@@ -86,6 +86,10 @@ void printEvaluation(const system::SequenceRunSummary& s) {
   const auto& ate = s.evaluation->ate.statistics;
   fmt::print("  ATE        rmse {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}) over {} poses\n",
              ate.rmse, ate.mean, ate.median, ate.max, ate.count);
+  if (s.ground_truth_frame != io::GroundTruthFrame::kCamera) {
+    fmt::print("             ground truth: {}\n",
+               io::describeGroundTruthFrame(s.ground_truth_frame));
+  }
   if (const auto& rpe = s.evaluation->rpe) {
     fmt::print("  RPE (1 s)  {:.4f} m, {:.3f} deg rmse\n", rpe->translational.rmse,
                rpe->rotational_deg.rmse);
@@ -100,6 +104,12 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
       "  frames     {} tracked of {} ({} lost, {} skipped for damaged images), {} keyframes, "
       "{} map points\n",
       s.tracked_frames, s.frames, s.lost_frames, s.skipped_frames, s.keyframes, s.map_points);
+  if (s.absent_images > 0) {
+    fmt::print(
+        "  absent     {} listed images not in the dataset, their frames left out (the log "
+        "names them)\n",
+        s.absent_images);
+  }
   fmt::print(
       "  tracking   median {:.1f} ms, p95 {:.1f} ms per frame (ORB extraction median {:.1f} ms)\n",
       s.tracking.median_ms, s.tracking.p95_ms, s.extraction.median_ms);

@@ -23,11 +23,14 @@ struct Frame {
 io::TumDataset openDataset(const std::filesystem::path& path,
                            const std::optional<std::filesystem::path>& camera_file,
                            const std::optional<std::string>& camera_preset,
-                           double max_time_difference) {
+                           double max_time_difference,
+                           const std::optional<std::string>& ground_truth_frame) {
   io::DatasetOptions options;
   options.camera_file = camera_file;
   options.camera_preset = camera_preset;
   options.max_time_difference = max_time_difference;
+  if (ground_truth_frame)
+    options.ground_truth_frame = io::requireGroundTruthFrame(*ground_truth_frame);
   const py::gil_scoped_release unlocked;
   return io::TumDataset::open(path, options);
 }
@@ -78,9 +81,13 @@ void bindDataset(py::module_& module) {
       "mask.txt), as `segslam run --dataset` reads it. Indexing and iteration load frames.")
       .def(py::init(&openDataset), py::arg("path"), py::arg("camera_file") = py::none(),
            py::arg("camera_preset") = py::none(), py::arg("max_time_difference") = 0.02,
+           py::arg("ground_truth_frame") = py::none(),
            "Opens and checks the dataset. The camera: camera_file, else camera_preset, else the "
-           "folder's camera.yaml or calibration.txt, else the TUM preset its name gives. "
-           "ValueError naming the file and line when something is wrong.")
+           "folder's camera.yaml or calibration.txt, else the preset its name gives (TUM, "
+           "Bonn). ground_truth_frame: what groundtruth.txt holds poses of, 'camera' or "
+           "'bonn-markers'; None: as the folder's name tells (a Bonn sequence's markers). "
+           "Listed images the folder lacks leave their frames out (absent_images). ValueError "
+           "naming the file and line when something is wrong.")
       .def("__len__", &io::TumDataset::size)
       .def("__getitem__", &frameAt, py::arg("index"),
            "The frame at `index` (negative counts from the end); IndexError beyond.")
@@ -90,7 +97,22 @@ void bindDataset(py::module_& module) {
       .def_property_readonly("folder", &io::TumDataset::folder)
       .def_property_readonly("timestamps", &frameTimestamps, "float64 (N,), the frames'.")
       .def_property_readonly("ground_truth", &io::TumDataset::groundTruth,
-                             "The groundtruth.txt trajectory, or None.")
+                             "The camera's poses from groundtruth.txt (converted where it holds "
+                             "others, see ground_truth_frame), or None.")
+      .def_property_readonly(
+          "ground_truth_frame",
+          [](const io::TumDataset& dataset) {
+            return io::groundTruthFrameName(dataset.groundTruthFrame());
+          },
+          "What groundtruth.txt holds poses of: 'camera' or 'bonn-markers'.")
+      .def_property_readonly(
+          "absent_images",
+          [](const io::TumDataset& dataset) {
+            std::vector<std::filesystem::path> paths;
+            for (const auto& image : dataset.absentImages()) paths.push_back(image.path);
+            return paths;
+          },
+          "Images the lists name that the folder lacks; their frames are left out.")
       .def_property_readonly("has_masks", &io::TumDataset::hasMasks);
 }
 

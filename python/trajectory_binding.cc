@@ -6,6 +6,7 @@
 #include "module_parts.h"
 #include "numpy_arrays.h"
 #include "segslam/core/trajectory.h"
+#include "segslam/io/ground_truth_frame.h"
 #include "segslam/io/trajectory_io.h"
 
 namespace segslam::python {
@@ -89,11 +90,15 @@ void bindTrajectory(py::module_& module) {
            "From float64 arrays: timestamps (N,) in seconds, poses (N, 4, 4) rigid transforms.")
       .def_static(
           "read_tum",
-          [](const std::filesystem::path& path) {
+          [](const std::filesystem::path& path, const std::string& frame) {
+            const auto ground_truth_frame = io::requireGroundTruthFrame(frame);
             const py::gil_scoped_release unlocked;
-            return io::readTumTrajectory(path);
+            return io::toCameraPoses(io::readTumTrajectory(path), ground_truth_frame);
           },
-          py::arg("path"), "Reads a TUM trajectory file (`t tx ty tz qx qy qz qw` per line).")
+          py::arg("path"), py::kw_only(), py::arg("frame") = "camera",
+          "Reads a TUM trajectory file (`t tx ty tz qx qy qz qw` per line). frame: what it holds "
+          "poses of; 'bonn-markers' (a Bonn RGB-D Dynamic groundtruth.txt) gives the camera's "
+          "poses by the dataset's transform.")
       .def(
           "write_tum",
           [](const core::Trajectory& trajectory, const std::filesystem::path& path) {

@@ -75,15 +75,22 @@ nlohmann::json optionsJson(const TrajectoryEvaluationOptions& options) {
             {"seed", options.rpe.seed}}}};
 }
 
+// Says so where the file's poses were converted to the camera's.
+std::string groundTruthNote(const TrajectoryEvaluation& evaluation) {
+  if (evaluation.ground_truth_frame == io::GroundTruthFrame::kCamera) return "";
+  return "; " + io::describeGroundTruthFrame(evaluation.ground_truth_frame);
+}
+
 }  // namespace
 
 std::string formatEvaluationTable(const TrajectoryEvaluation& evaluation) {
   const auto& ate = evaluation.ate;
   const auto& rpe = evaluation.rpe;
   std::string table =
-      fmt::format("{:<14}{} ({} poses)\n{:<14}{} ({} poses)\n", "ground truth",
-                  evaluation.ground_truth_file.string(), evaluation.ground_truth.size(), "estimate",
-                  evaluation.estimate_file.string(), evaluation.estimate.size());
+      fmt::format("{:<14}{} ({} poses{})\n{:<14}{} ({} poses)\n", "ground truth",
+                  evaluation.ground_truth_file.string(), evaluation.ground_truth.size(),
+                  groundTruthNote(evaluation), "estimate", evaluation.estimate_file.string(),
+                  evaluation.estimate.size());
   const std::string ate_label = fmt::format(
       "ATE ({}, {} pairs)", alignmentTitle(evaluation.options.ate.alignment), ate.pairs.size());
   table += statisticsLine(ate_label, ate.statistics, "m");
@@ -107,7 +114,9 @@ nlohmann::json evaluationJson(const TrajectoryEvaluation& evaluation) {
   nlohmann::json json = {
       {"ground_truth",
        {{"file", evaluation.ground_truth_file.string()},
-        {"poses", evaluation.ground_truth.size()}}},
+        {"poses", evaluation.ground_truth.size()},
+        {"frame", io::groundTruthFrameName(evaluation.ground_truth_frame)},
+        {"poses_of", io::describeGroundTruthFrame(evaluation.ground_truth_frame)}}},
       {"estimate",
        {{"file", evaluation.estimate_file.string()}, {"poses", evaluation.estimate.size()}}},
       {"options", optionsJson(evaluation.options)},

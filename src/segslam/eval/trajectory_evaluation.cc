@@ -27,12 +27,15 @@ auto reportingFiles(const TrajectoryEvaluation& evaluation, std::string_view met
 
 TrajectoryEvaluation evaluateTrajectoryFiles(const std::filesystem::path& ground_truth_file,
                                              const std::filesystem::path& estimate_file,
-                                             const TrajectoryEvaluationOptions& options) {
+                                             const TrajectoryEvaluationOptions& options,
+                                             io::GroundTruthFrame ground_truth_frame) {
   TrajectoryEvaluation evaluation;
   evaluation.ground_truth_file = ground_truth_file;
+  evaluation.ground_truth_frame = ground_truth_frame;
   evaluation.estimate_file = estimate_file;
   evaluation.options = options;
-  evaluation.ground_truth = io::readTumTrajectory(ground_truth_file);
+  evaluation.ground_truth =
+      io::toCameraPoses(io::readTumTrajectory(ground_truth_file), ground_truth_frame);
   evaluation.estimate = io::readTumTrajectory(estimate_file);
   evaluation.ate = reportingFiles(evaluation, "ATE", [&] {
     return evaluateAte(evaluation.ground_truth, evaluation.estimate, options.ate);

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "segslam/io/dataset_name.h"
 #include "segslam/util/error.h"
 #include "segslam/util/text_file.h"
 #include "segslam/util/yaml_document.h"
@@ -98,10 +99,17 @@ std::optional<core::Camera> cameraPreset(const std::string& name) {
   if (name == "freiburg3") {
     return makeTumCamera(name, 535.4, 539.2, 320.1, 247.6, {0.0, 0.0, 0.0, 0.0, 0.0}, 5000.0);
   }
+  if (name == "bonn") {
+    // The Bonn RGB-D Dynamic dataset's ASUS Xtion, as its README gives it.
+    return makeTumCamera(name, 542.822841, 542.576870, 315.593520, 237.756098,
+                         {0.039903, -0.099343, -0.000730, -0.000144, 0.0}, 5000.0);
+  }
   return std::nullopt;
 }
 
-std::vector<std::string> cameraPresetNames() { return {"freiburg1", "freiburg2", "freiburg3"}; }
+std::vector<std::string> cameraPresetNames() {
+  return {"freiburg1", "freiburg2", "freiburg3", "bonn"};
+}
 
 core::Camera requireCameraPreset(const std::string& name) {
   auto preset = cameraPreset(name);
@@ -113,28 +121,14 @@ core::Camera requireCameraPreset(const std::string& name) {
 }
 
 std::optional<std::string> presetNameForDataset(const std::filesystem::path& dataset_folder) {
-  // The folder's own name, also for "." or a path ending in '/'.
-  std::error_code ec;
-  std::filesystem::path folder = std::filesystem::weakly_canonical(dataset_folder, ec);
-  if (ec) folder = dataset_folder.lexically_normal();
-  if (!folder.has_filename()) folder = folder.parent_path();
-  std::string name = folder.filename().string();
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  // A "freiburg<N>" or "fr<N>" token (N in 1..3) that starts the name or follows a
-  // non-alphanumeric character and is not followed by another digit.
-  const auto is_alnum = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
-  const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
-  for (const std::string_view prefix : {std::string_view("freiburg"), std::string_view("fr")}) {
-    for (std::size_t at = name.find(prefix); at != std::string::npos;
-         at = name.find(prefix, at + 1)) {
-      const std::size_t digit = at + prefix.size();
-      if (at > 0 && is_alnum(name[at - 1])) continue;
-      if (digit >= name.size() || name[digit] < '1' || name[digit] > '3') continue;
-      if (digit + 1 < name.size() && is_digit(name[digit + 1])) continue;
-      return "freiburg" + std::string(1, name[digit]);
+  const std::string name = datasetFolderName(dataset_folder);
+  for (const char* prefix : {"freiburg", "fr"}) {
+    for (const char digit : {'1', '2', '3'}) {
+      if (hasNameToken(name, prefix + std::string(1, digit)))
+        return "freiburg" + std::string(1, digit);
     }
   }
+  if (hasNameToken(name, "bonn")) return "bonn";
   return std::nullopt;
 }
 

@@ -10,15 +10,17 @@
 
 namespace segslam::io {
 
-// Built-in camera presets of the TUM RGB-D benchmark: "freiburg1", "freiburg2", "freiburg3".
+// Built-in camera presets: the TUM RGB-D benchmark's "freiburg1", "freiburg2", "freiburg3" and the
+// Bonn RGB-D Dynamic dataset's "bonn", with the intrinsics and distortion their sites publish.
 std::optional<core::Camera> cameraPreset(const std::string& name);
 std::vector<std::string> cameraPresetNames();
 
 // The preset called `name`; throws util::Error listing the known presets when there is none.
 core::Camera requireCameraPreset(const std::string& name);
 
-// Guesses the TUM preset from a dataset folder name ("rgbd_dataset_freiburg2_desk",
-// "tum_fr1_xyz_300", ...). Returns nothing when the name does not say.
+// Guesses the preset from a dataset folder name: "freiburg<N>" or "fr<N>" ("rgbd_dataset_
+// freiburg2_desk", "tum_fr1_xyz_300") names a TUM camera, "bonn" ("rgbd_bonn_crowd") the Bonn
+// one (io::hasNameToken). Returns nothing when the name does not say.
 std::optional<std::string> presetNameForDataset(const std::filesystem::path& dataset_folder);
 
 // Reads camera settings from YAML:

@@ -15,8 +15,9 @@ std::string yamlError(std::string_view text) {
   return errorMessage([&] { (void)parseCameraYaml(text, "d/camera.yaml"); });
 }
 
-TEST(CameraConfig, PresetsHaveTheTumCalibration) {
-  EXPECT_EQ(cameraPresetNames(), (std::vector<std::string>{"freiburg1", "freiburg2", "freiburg3"}));
+TEST(CameraConfig, PresetsHaveThePublishedCalibration) {
+  EXPECT_EQ(cameraPresetNames(),
+            (std::vector<std::string>{"freiburg1", "freiburg2", "freiburg3", "bonn"}));
   const auto fr1 = cameraPreset("freiburg1");
   ASSERT_TRUE(fr1);
   EXPECT_EQ(fr1->name, "freiburg1");
@@ -28,9 +29,19 @@ TEST(CameraConfig, PresetsHaveTheTumCalibration) {
   EXPECT_DOUBLE_EQ(cameraPreset("freiburg2")->depth_factor, 5208.0);
   EXPECT_FALSE(cameraPreset("freiburg3")->hasDistortion());
   EXPECT_FALSE(cameraPreset("kinect"));
+  const auto bonn = cameraPreset("bonn");
+  ASSERT_TRUE(bonn);
+  EXPECT_DOUBLE_EQ(bonn->fx, 542.822841);
+  EXPECT_DOUBLE_EQ(bonn->fy, 542.576870);
+  EXPECT_DOUBLE_EQ(bonn->cx, 315.593520);
+  EXPECT_DOUBLE_EQ(bonn->cy, 237.756098);
+  EXPECT_DOUBLE_EQ(bonn->distortion[0], 0.039903);
+  EXPECT_DOUBLE_EQ(bonn->distortion[1], -0.099343);
+  EXPECT_DOUBLE_EQ(bonn->distortion[3], -0.000144);
+  EXPECT_DOUBLE_EQ(bonn->depth_factor, 5000.0);
   EXPECT_DOUBLE_EQ(requireCameraPreset("freiburg3").fy, 539.2);
   EXPECT_EQ(errorMessage([] { (void)requireCameraPreset("fr1"); }),
-            "unknown camera preset 'fr1' (known: freiburg1, freiburg2, freiburg3)");
+            "unknown camera preset 'fr1' (known: freiburg1, freiburg2, freiburg3, bonn)");
 }
 
 TEST(CameraConfig, PresetNameFromDatasetFolderName) {
@@ -43,6 +54,10 @@ TEST(CameraConfig, PresetNameFromDatasetFolderName) {
   EXPECT_FALSE(presetNameForDataset("/data/run_fr12"));
   EXPECT_FALSE(presetNameForDataset("/data/afr1"));
   EXPECT_FALSE(presetNameForDataset("/data/fr4_office"));
+  EXPECT_EQ(presetNameForDataset("/data/rgbd_bonn_crowd"), "bonn");
+  EXPECT_EQ(presetNameForDataset("/data/rgbd_bonn_crowd_300/"), "bonn");
+  EXPECT_EQ(presetNameForDataset("/data/Bonn-balloon2"), "bonn");
+  EXPECT_FALSE(presetNameForDataset("/data/bonnet"));
 }
 
 TEST(CameraConfig, YamlRoundTrip) {
@@ -151,7 +166,7 @@ TEST(CameraConfig, UnknownKeysAndPresetsAreRejected) {
             "fx, fy, cx, cy, distortion, depth_factor, fps)");
   EXPECT_EQ(yamlError("camera:\n  preset: kinect\n"),
             "d/camera.yaml:2: unknown camera preset 'kinect' (known: freiburg1, freiburg2, "
-            "freiburg3)");
+            "freiburg3, bonn)");
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 #include "segslam/io/tum_dataset.h"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 #include <system_error>
@@ -76,9 +78,55 @@ std::vector<ImageListEntry> readCheckedImageList(const fs::path& folder, std::st
   return entries;
 }
 
-std::vector<ImageListEntry> readNonEmptyImageList(const fs::path& folder, std::string_view name) {
-  auto entries = readCheckedImageList(folder, name);
-  if (entries.empty()) util::failAt(folder / name, "lists no images");
+// The colour and depth images a list names that are not there. Published sequences list the odd
+// image they do not contain (Bonn RGB-D Dynamic); the TUM tools associate the lists as written,
+// and the frames whose image is absent are skipped, as damaged ones are. A list whose images are
+// mostly absent names the wrong folder, and is an error.
+class AbsentImageCheck {
+ public:
+  AbsentImageCheck(fs::path folder, std::vector<AbsentImage>& absent)
+      : folder_(std::move(folder)), absent_(absent) {}
+
+  // Records the entries of `list_file` whose image is absent, with a warning naming each.
+  void check(const fs::path& list_file, const std::vector<const ImageListEntry*>& entries) {
+    const std::size_t first = absent_.size();
+    for (const ImageListEntry* entry : entries) {
+      const fs::path path = folder_ / entry->path;
+      if (!isFile(path)) absent_.push_back({list_file, entry->line, path});
+    }
+    const std::size_t absent = absent_.size() - first;
+    if (2 * absent > entries.size()) {
+      util::failAt(list_file, absent_[first].line,
+                   fmt::format("{} of its {} listed images do not exist, the first {}", absent,
+                               entries.size(), absent_[first].path.string()));
+    }
+    for (std::size_t i = first; i < absent_.size(); ++i) {
+      spdlog::warn("{}:{}: listed image {} does not exist: left out", absent_[i].list_file.string(),
+                   absent_[i].line, absent_[i].path.string());
+    }
+  }
+
+  [[nodiscard]] bool isAbsent(const fs::path& list_file, int line) const {
+    return std::any_of(absent_.begin(), absent_.end(), [&](const AbsentImage& image) {
+      return image.line == line && image.list_file == list_file;
+    });
+  }
+
+ private:
+  fs::path folder_;
+  std::vector<AbsentImage>& absent_;
+};
+
+std::vector<const ImageListEntry*> pointersTo(const std::vector<ImageListEntry>& entries) {
+  std::vector<const ImageListEntry*> pointers;
+  pointers.reserve(entries.size());
+  for (const auto& entry : entries) pointers.push_back(&entry);
+  return pointers;
+}
+
+std::vector<ImageListEntry> readNonEmptyImageList(const fs::path& file) {
+  auto entries = readImageList(file);
+  if (entries.empty()) util::failAt(file, "lists no images");
   return entries;
 }
 
@@ -106,43 +154,68 @@ FrameRecord makeFrame(const fs::path& folder, const ImageListEntry& rgb,
   return frame;
 }
 
-std::vector<FrameRecord> framesFromAssociationList(const fs::path& file) {
+std::vector<FrameRecord> requireFrames(std::vector<FrameRecord> frames, const fs::path& file) {
+  if (frames.empty()) util::failAt(file, "none of the frames it lists has its images");
+  return frames;
+}
+
+std::vector<FrameRecord> framesFromAssociationList(const fs::path& file,
+                                                   std::vector<AbsentImage>& absent) {
   const fs::path folder = file.parent_path();
   const auto entries = readAssociationList(file);
   if (entries.empty()) util::failAt(file, "lists no frames");
+  std::vector<const ImageListEntry*> images;
+  for (const auto& entry : entries) {
+    images.push_back(&entry.rgb);
+    images.push_back(&entry.depth);
+  }
+  AbsentImageCheck absent_images(folder, absent);
+  absent_images.check(file, images);
   std::vector<FrameRecord> frames;
   frames.reserve(entries.size());
   for (const auto& entry : entries) {
-    requireListedFileExists(entry.rgb, folder, file);
-    requireListedFileExists(entry.depth, folder, file);
+    // Both images of an entry share its line: either absent skips it.
+    if (absent_images.isAbsent(file, entry.rgb.line)) continue;
     frames.push_back(makeFrame(folder, entry.rgb, entry.depth));
   }
-  return frames;
+  return requireFrames(std::move(frames), file);
 }
 
 std::vector<FrameRecord> framesFromColourAndDepthLists(const fs::path& folder,
-                                                       double max_difference) {
-  const auto rgb = readNonEmptyImageList(folder, "rgb.txt");
-  const auto depth = readNonEmptyImageList(folder, "depth.txt");
+                                                       double max_difference,
+                                                       std::vector<AbsentImage>& absent) {
+  const fs::path rgb_file = folder / "rgb.txt";
+  const fs::path depth_file = folder / "depth.txt";
+  const auto rgb = readNonEmptyImageList(rgb_file);
+  const auto depth = readNonEmptyImageList(depth_file);
+  AbsentImageCheck absent_images(folder, absent);
+  absent_images.check(rgb_file, pointersTo(rgb));
+  absent_images.check(depth_file, pointersTo(depth));
   const auto pairs = associateTimestamps(timestampsOf(rgb), timestampsOf(depth), max_difference);
   if (pairs.empty()) {
-    util::failAt(folder / "rgb.txt",
-                 fmt::format("no colour image has a depth image in depth.txt within {} s "
-                             "(colour {:.6f} to {:.6f}, depth {:.6f} to {:.6f})",
-                             max_difference, rgb.front().timestamp, rgb.back().timestamp,
-                             depth.front().timestamp, depth.back().timestamp));
+    util::failAt(rgb_file, fmt::format("no colour image has a depth image in depth.txt within {} s "
+                                       "(colour {:.6f} to {:.6f}, depth {:.6f} to {:.6f})",
+                                       max_difference, rgb.front().timestamp, rgb.back().timestamp,
+                                       depth.front().timestamp, depth.back().timestamp));
   }
   std::vector<FrameRecord> frames;
   frames.reserve(pairs.size());
-  for (const auto& [i, j] : pairs) frames.push_back(makeFrame(folder, rgb[i], depth[j]));
-  return frames;
+  for (const auto& [i, j] : pairs) {
+    if (absent_images.isAbsent(rgb_file, rgb[i].line) ||
+        absent_images.isAbsent(depth_file, depth[j].line)) {
+      continue;
+    }
+    frames.push_back(makeFrame(folder, rgb[i], depth[j]));
+  }
+  return requireFrames(std::move(frames), rgb_file);
 }
 
-std::vector<FrameRecord> readFrames(const fs::path& folder, double max_difference) {
+std::vector<FrameRecord> readFrames(const fs::path& folder, double max_difference,
+                                    std::vector<AbsentImage>& absent) {
   for (const std::string_view name : kAssociationFiles) {
-    if (pathExists(folder / name)) return framesFromAssociationList(folder / name);
+    if (pathExists(folder / name)) return framesFromAssociationList(folder / name, absent);
   }
-  return framesFromColourAndDepthLists(folder, max_difference);
+  return framesFromColourAndDepthLists(folder, max_difference, absent);
 }
 
 void attachFrameImages(const FrameImageList& list, const fs::path& folder, double max_difference,
@@ -162,10 +235,10 @@ void attachFrameImages(const FrameImageList& list, const fs::path& folder, doubl
   }
 }
 
-std::optional<core::Trajectory> readGroundTruth(const fs::path& folder) {
+std::optional<core::Trajectory> readGroundTruth(const fs::path& folder, GroundTruthFrame frame) {
   const fs::path file = folder / "groundtruth.txt";
   if (!pathExists(file)) return std::nullopt;
-  return readTumTrajectory(file);
+  return toCameraPoses(readTumTrajectory(file), frame);
 }
 
 struct CameraChoice {
@@ -206,11 +279,13 @@ TumDataset TumDataset::open(const fs::path& folder, const DatasetOptions& option
   requireMaxTimeDifference(options.max_time_difference);
   TumDataset dataset;
   dataset.folder_ = folder;
-  dataset.frames_ = readFrames(folder, options.max_time_difference);
+  dataset.frames_ = readFrames(folder, options.max_time_difference, dataset.absent_images_);
   for (const auto& list : kFrameImageLists) {
     attachFrameImages(list, folder, options.max_time_difference, dataset.frames_);
   }
-  dataset.ground_truth_ = readGroundTruth(folder);
+  dataset.ground_truth_frame_ =
+      options.ground_truth_frame.value_or(groundTruthFrameForDataset(folder));
+  dataset.ground_truth_ = readGroundTruth(folder, dataset.ground_truth_frame_);
   auto [camera, source] = chooseCamera(folder, options, dataset.frames_);
   dataset.camera_ = std::move(camera);
   dataset.camera_source_ = std::move(source);

@@ -9,6 +9,7 @@
 
 #include "segslam/core/camera.h"
 #include "segslam/core/trajectory.h"
+#include "segslam/io/ground_truth_frame.h"
 
 namespace segslam::io {
 
@@ -21,6 +22,16 @@ struct DatasetOptions {
   // named by the folder ("fr1", ...).
   std::optional<std::filesystem::path> camera_file;
   std::optional<std::string> camera_preset;
+  // What groundtruth.txt holds poses of; by default as the folder's name tells
+  // (groundTruthFrameForDataset: a Bonn sequence's marker poses).
+  std::optional<GroundTruthFrame> ground_truth_frame;
+};
+
+// An image that a list names and the sequence does not contain.
+struct AbsentImage {
+  std::filesystem::path list_file;
+  int line = 0;
+  std::filesystem::path path;
 };
 
 // One associated RGB-D frame of the sequence (paths are resolved against the dataset folder).
@@ -57,7 +68,8 @@ struct FrameLayers {
 // - rgb.txt and depth.txt (`timestamp path` per line), associated by nearest timestamp exactly
 //   as the TUM tools do; or associations.txt or else associated.txt (associate.py output,
 //   `t_rgb rgb_path t_depth depth_path`), which then alone defines the frames;
-// - optional groundtruth.txt (TUM trajectory);
+// - optional groundtruth.txt (TUM trajectory), converted to camera poses where it holds others
+//   (DatasetOptions::ground_truth_frame);
 // - optional mask.txt, labels.txt, instances.txt (`timestamp path`), matched to the frames by
 //   timestamp the same way; when such a list exists, every frame must have an entry in it;
 // - optional camera.yaml (see DatasetOptions for the camera precedence).
@@ -66,7 +78,10 @@ struct FrameLayers {
 // later line wins and lines out of order are sorted, with a warning naming the list.
 // Opening parses and validates every list file and checks that every listed file exists, without
 // decoding any image (but the first colour image when calibration.txt gives the camera, for its
-// size); any problem throws util::Error naming the file and line.
+// size); any problem throws util::Error naming the file and line. Colour and depth images that
+// their lists name but the folder lacks are the exception, as published sequences have them:
+// the lists are associated as written, the frames of absent images are left out with a warning
+// naming each image (absentImages()), and only a list whose images are mostly absent is an error.
 class TumDataset {
  public:
   static TumDataset open(const std::filesystem::path& folder, const DatasetOptions& options = {});
@@ -77,7 +92,10 @@ class TumDataset {
   [[nodiscard]] const std::string& cameraSource() const { return camera_source_; }
   [[nodiscard]] const std::vector<FrameRecord>& frames() const { return frames_; }
   [[nodiscard]] std::size_t size() const { return frames_.size(); }
+  // Camera poses (converted from groundTruthFrame() where the file holds others).
   [[nodiscard]] const std::optional<core::Trajectory>& groundTruth() const { return ground_truth_; }
+  [[nodiscard]] GroundTruthFrame groundTruthFrame() const { return ground_truth_frame_; }
+  [[nodiscard]] const std::vector<AbsentImage>& absentImages() const { return absent_images_; }
   [[nodiscard]] bool hasMasks() const;
 
   // Loads and validates the images of frame i: wrong image types and sizes throw util::Error
@@ -92,6 +110,8 @@ class TumDataset {
   std::string camera_source_;
   std::vector<FrameRecord> frames_;
   std::optional<core::Trajectory> ground_truth_;
+  GroundTruthFrame ground_truth_frame_ = GroundTruthFrame::kCamera;
+  std::vector<AbsentImage> absent_images_;
 };
 
 }  // namespace segslam::io

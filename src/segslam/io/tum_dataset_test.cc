@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 #include "segslam/io/frame_images.h"
 #include "segslam/io/io_test_support.h"
 #include "segslam/io/timestamp_association.h"
+#include "segslam/io/trajectory_io.h"
 #include "segslam/testing/test_support.h"
 
 namespace segslam::io {
@@ -219,7 +221,7 @@ TEST_F(TumDatasetTest, UnknownPresetListsTheKnownOnes) {
   DatasetOptions options;
   options.camera_preset = "kinect";
   EXPECT_EQ(openError(folder_, options),
-            "unknown camera preset 'kinect' (known: freiburg1, freiburg2, freiburg3)");
+            "unknown camera preset 'kinect' (known: freiburg1, freiburg2, freiburg3, bonn)");
 }
 
 TEST_F(TumDatasetTest, NoCameraIsAnErrorThatSaysWhatToPass) {
@@ -314,12 +316,112 @@ TEST_F(TumDatasetTest, EmptySequences) {
   EXPECT_EQ(openError(folder_), (folder_ / "associations.txt").string() + ": lists no frames");
 }
 
-TEST_F(TumDatasetTest, ListedFileThatDoesNotExistNamesListAndLine) {
-  const fs::path missing = folder_ / fmt::format("depth/{:.6f}.png", tiny_.depth_stamps[3]);
+// Published sequences list the odd image they lack (Bonn RGB-D Dynamic): its frame is left out
+// with a warning naming the image, and the rest of the sequence opens.
+TEST_F(TumDatasetTest, ListedImagesThatDoNotExistLeaveTheirFramesOut) {
+  const fs::path missing = folder_ / fmt::format("depth/{:.6f}.png", tiny_.depth_stamps[2]);
   fs::remove(missing);
-  EXPECT_EQ(openError(folder_), at(folder_, "depth.txt", TinyDataset::kFirstListLine + 3) +
+  testing::CapturedLog log;
+  const auto dataset = TumDataset::open(folder_);
+  ASSERT_EQ(dataset.size(), 3u);
+  EXPECT_NEAR(dataset.frames()[1].timestamp, tiny_.rgb_stamps[1], 1e-6);
+  EXPECT_NEAR(dataset.frames()[2].timestamp, tiny_.rgb_stamps[3], 1e-6);
+  ASSERT_EQ(dataset.absentImages().size(), 1u);
+  EXPECT_EQ(dataset.absentImages()[0].path, missing);
+  EXPECT_EQ(dataset.absentImages()[0].line, TinyDataset::kFirstListLine + 2);
+  EXPECT_TRUE(contains(log.text(),
+                       "[warning] " + at(folder_, "depth.txt", TinyDataset::kFirstListLine + 2) +
+                           "listed image " + missing.string() + " does not exist: left out"));
+}
+
+// The lists are associated as written, as the TUM tools do: a colour image whose nearest depth
+// image is absent is not paired with another one instead.
+TEST_F(TumDatasetTest, AbsentImagesAreAssociatedAsListedThenLeftOut) {
+  auto depth = tiny_.depth_stamps;
+  depth.push_back(tiny_.rgb_stamps[1] + 0.019);  // a second candidate for colour frame 1
+  writeImage(folder_ / fmt::format("depth/{:.6f}.png", depth.back()), testing::tinyDepth(1));
+  writeText(folder_ / "depth.txt", testing::imageList(depth, "depth"));
+  fs::remove(folder_ / fmt::format("depth/{:.6f}.png", tiny_.depth_stamps[1]));
+  const auto dataset = TumDataset::open(folder_);
+  ASSERT_EQ(dataset.size(), 3u);
+  for (const auto& frame : dataset.frames()) {
+    EXPECT_GT(std::abs(frame.timestamp - tiny_.rgb_stamps[1]), 1e-3);
+  }
+}
+
+TEST_F(TumDatasetTest, AbsentImagesInAnAssociationListLeaveTheirFramesOut) {
+  std::string associations;
+  for (std::size_t i = 0; i < tiny_.rgb_stamps.size(); ++i) {
+    associations += fmt::format("{0:.6f} rgb/{0:.6f}.png {1:.6f} depth/{1:.6f}.png\n",
+                                tiny_.rgb_stamps[i], tiny_.depth_stamps[i]);
+  }
+  writeText(folder_ / "associations.txt", associations);
+  fs::remove(folder_ / fmt::format("rgb/{:.6f}.png", tiny_.rgb_stamps[0]));
+  const auto dataset = TumDataset::open(folder_);
+  ASSERT_EQ(dataset.size(), 3u);
+  EXPECT_NEAR(dataset.frames()[0].timestamp, tiny_.rgb_stamps[1], 1e-6);
+  EXPECT_EQ(dataset.absentImages().size(), 1u);
+}
+
+// A list whose images are mostly absent names the wrong folder: an error naming the list, the
+// line of its first absent image and that image.
+TEST_F(TumDatasetTest, MostlyAbsentImagesAreAnErrorNamingTheListAndTheFirst) {
+  for (int i : {1, 2, 3}) {
+    fs::remove(folder_ / fmt::format("depth/{:.6f}.png", tiny_.depth_stamps[i]));
+  }
+  const fs::path first = folder_ / fmt::format("depth/{:.6f}.png", tiny_.depth_stamps[1]);
+  EXPECT_EQ(openError(folder_), at(folder_, "depth.txt", TinyDataset::kFirstListLine + 1) +
+                                    "3 of its 4 listed images do not exist, the first " +
+                                    first.string());
+}
+
+// Ground-truth images (masks) are our own lists: an absent one is still an error.
+TEST_F(TumDatasetTest, ListedMaskThatDoesNotExistNamesListAndLine) {
+  const fs::path missing = folder_ / fmt::format("mask/{:.6f}.png", tiny_.rgb_stamps[3]);
+  fs::remove(missing);
+  EXPECT_EQ(openError(folder_), at(folder_, "mask.txt", TinyDataset::kFirstListLine + 3) +
                                     "listed file " + missing.string() +
                                     " does not exist (or is not a file)");
+}
+
+// A Bonn sequence's groundtruth.txt holds the markers' poses: the dataset gives the camera's.
+TEST_F(TumDatasetTest, BonnFolderGroundTruthIsConvertedToCameraPoses) {
+  const fs::path bonn = temp_.path() / "rgbd_bonn_tiny";
+  fs::rename(folder_, bonn);
+  const auto dataset = TumDataset::open(bonn);
+  EXPECT_EQ(dataset.groundTruthFrame(), GroundTruthFrame::kBonnMarkers);
+  const auto markers = readTumTrajectory(bonn / "groundtruth.txt");
+  const auto expected = toCameraPoses(markers, GroundTruthFrame::kBonnMarkers);
+  ASSERT_TRUE(dataset.groundTruth());
+  ASSERT_EQ(dataset.groundTruth()->size(), expected.size());
+  EXPECT_TRUE((*dataset.groundTruth())[2].T_wc.isApprox(expected[2].T_wc, 1e-12));
+  EXPECT_FALSE((*dataset.groundTruth())[2].T_wc.isApprox(markers[2].T_wc, 1e-3));
+
+  DatasetOptions as_camera;
+  as_camera.ground_truth_frame = GroundTruthFrame::kCamera;
+  EXPECT_TRUE((*TumDataset::open(bonn, as_camera).groundTruth())[2].T_wc.isApprox(markers[2].T_wc));
+  EXPECT_EQ(TumDataset::open(folder_.parent_path() / "rgbd_bonn_tiny").cameraSource(),
+            "file " + (bonn / "camera.yaml").string() + " (in the dataset folder)");
+}
+
+// The shared Bonn sequence opens as published: its two absent depth images left out, the Bonn
+// camera from its name, and the camera poses that the dataset's transform gives.
+TEST(TumDatasetRealData, BonnCrowdOpensAsPublished) {
+  SEGSLAM_REQUIRE_SHARED(folder, "rgbd_bonn_crowd_300");
+  const auto dataset = TumDataset::open(folder);
+  EXPECT_EQ(dataset.size(), 300u);
+  EXPECT_EQ(dataset.absentImages().size(), 2u);
+  EXPECT_EQ(dataset.camera().name, "bonn");
+  EXPECT_EQ(dataset.cameraSource(), "preset bonn (from folder name)");
+  EXPECT_EQ(dataset.groundTruthFrame(), GroundTruthFrame::kBonnMarkers);
+  const auto reference = readTumTrajectory(folder / "groundtruth_camera.txt");
+  const auto& truth = *dataset.groundTruth();
+  ASSERT_EQ(truth.size(), reference.size());
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    EXPECT_LT((truth[i].T_wc.translation() - reference[i].T_wc.translation()).norm(), 2e-6) << i;
+    EXPECT_LT(geometry::rotationAngleAccurate(truth[i].T_wc.inverse() * reference[i].T_wc), 1e-5)
+        << i;
+  }
 }
 
 TEST_F(TumDatasetTest, FrameWithoutMaskNamesMaskList) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -147,6 +148,64 @@ TEST_F(CommandsCli, TwentyRealFramesRunAndReportTheRpeAsNotComputed) {
   EXPECT_TRUE(summary["ate_rmse_m"].is_number());
   EXPECT_TRUE(summary["rpe_translational_rmse_m"].is_null());
   EXPECT_TRUE(summary["rpe_not_computed"].is_string());
+}
+
+// The report: `segslam run --dataset rgbd_bonn_crowd_300` stopped at a depth image that
+// depth.txt lists and the sequence lacks, found no camera, and would have scored the markers'
+// poses. As published, with no options, it runs; the ATE is against the camera's poses.
+TEST_F(CommandsCli, ABonnSequenceRunsAsPublishedAgainstTheCamerasGroundTruth) {
+  SEGSLAM_REQUIRE_SHARED(sequence, "rgbd_bonn_crowd_300");
+  const fs::path out = temp_.path() / "run";
+  auto result =
+      runSegslam("run --dataset " + inQuotes(sequence) +
+                     " --max-frames 40 --seg none --no-map --deterministic --out " + inQuotes(out),
+                 temp_.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.err.find("depth.txt:4: listed image " +
+                            (sequence / "depth/1548339819.85514.png").string() +
+                            " does not exist: left out"),
+            std::string::npos)
+      << result.err;
+  EXPECT_NE(result.out.find("  absent     2 listed images not in the dataset"), std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("ground truth: Bonn motion-capture markers, converted to the camera"),
+            std::string::npos)
+      << result.out;
+  const auto summary = nlohmann::json::parse(segslam::testing::fileContents(out / "summary.json"));
+  EXPECT_EQ(summary["absent_images"], 2);
+  EXPECT_EQ(summary["ground_truth"]["frame"], "bonn-markers");
+  const auto evaluation =
+      nlohmann::json::parse(segslam::testing::fileContents(out / "evaluation.json"));
+  EXPECT_EQ(evaluation["ground_truth"]["frame"], "bonn-markers");
+
+  // The ATE is the one against the dataset's documented camera poses (the shared folder's
+  // groundtruth_camera.txt holds them); `eval` reads a Bonn groundtruth.txt the same way.
+  const auto ateAgainst = [&](const std::string& ground_truth, const std::string& options) {
+    const auto evaluated =
+        runSegslam("eval --json --gt " + inQuotes(sequence / ground_truth) + " --est " +
+                       inQuotes(out / "CameraTrajectory.txt") + options,
+                   temp_.path());
+    EXPECT_EQ(evaluated.exit_code, 0) << evaluated.err;
+    return nlohmann::json::parse(evaluated.out)["ate"]["translational"]["rmse"].get<double>();
+  };
+  const double camera = ateAgainst("groundtruth_camera.txt", "");
+  EXPECT_NEAR(summary["ate_rmse_m"].get<double>(), camera, 1e-6);
+  EXPECT_NEAR(ateAgainst("groundtruth.txt", ""), camera, 1e-6);
+  EXPECT_GT(std::abs(ateAgainst("groundtruth.txt", " --gt-frame camera") - camera), 1e-5);
+
+  result = runSegslam("check --dataset " + inQuotes(sequence) + " --max-frames 5 --out " +
+                          inQuotes(temp_.path() / "check"),
+                      temp_.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("  camera        preset bonn (from folder name)"), std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("depth.txt:211: " + (sequence / "depth/1548339826.76234.png").string() +
+                            " is not in the dataset"),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("(Bonn motion-capture markers, converted to the camera"),
+            std::string::npos)
+      << result.out;
 }
 
 TEST_F(CommandsCli, RunNamesAMapFileThatIsNotOne) {

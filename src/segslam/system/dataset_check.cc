@@ -88,13 +88,21 @@ DatasetCheck checkDataset(const io::TumDataset& dataset, std::size_t max_frames,
     check.mean_dynamic_share = dynamic_share_sum / static_cast<double>(loaded);
   }
   if (!std::isfinite(check.min_depth_m)) check.min_depth_m = 0.0;
+  check.absent_images = dataset.absentImages();
+  check.ground_truth_frame = dataset.groundTruthFrame();
   if (dataset.groundTruth()) check.ground_truth_poses = dataset.groundTruth()->size();
   check.frames_with_ground_truth = framesWithGroundTruth(dataset, check.frames, 0.02);
   return check;
 }
 
 nlohmann::json toJson(const DatasetCheck& check) {
+  nlohmann::json absent = nlohmann::json::array();
+  for (const auto& image : check.absent_images) {
+    absent.push_back(
+        {{"list", image.list_file.string()}, {"line", image.line}, {"path", image.path.string()}});
+  }
   return {{"frames", check.frames},
+          {"absent_images", absent},
           {"skipped_frames", check.skipped_frames},
           {"duration_s", check.duration_s},
           {"mean_frame_rate", check.mean_frame_rate},
@@ -104,6 +112,8 @@ nlohmann::json toJson(const DatasetCheck& check) {
           {"max_depth_m", check.max_depth_m},
           {"frames_with_dynamic_pixels", check.frames_with_dynamic_pixels},
           {"mean_dynamic_share", check.mean_dynamic_share},
+          {"ground_truth_frame", io::groundTruthFrameName(check.ground_truth_frame)},
+          {"ground_truth_poses_of", io::describeGroundTruthFrame(check.ground_truth_frame)},
           {"ground_truth_poses", check.ground_truth_poses},
           {"frames_with_ground_truth", check.frames_with_ground_truth}};
 }

@@ -4,6 +4,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "segslam/io/tum_dataset.h"
 
@@ -22,6 +23,9 @@ struct DatasetCheck {
   double max_depth_m = 0.0;
   std::size_t frames_with_dynamic_pixels = 0;  // only when the dataset has masks
   double mean_dynamic_share = 0.0;             // only when the dataset has masks
+  // Listed colour and depth images that the folder lacks (io::TumDataset::absentImages).
+  std::vector<io::AbsentImage> absent_images;
+  io::GroundTruthFrame ground_truth_frame = io::GroundTruthFrame::kCamera;
   std::size_t ground_truth_poses = 0;
   std::size_t frames_with_ground_truth = 0;  // frames whose timestamp associates to a GT pose
 };

@@ -85,12 +85,14 @@ void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
               const std::filesystem::path& out_dir, const core::Trajectory& estimate,
               SequenceRunSummary& summary) {
   summary.has_ground_truth = dataset.groundTruth().has_value();
+  summary.ground_truth_frame = dataset.groundTruthFrame();
   if (!summary.has_ground_truth) {
     summary.evaluation_not_computed = "the dataset has no groundtruth.txt";
     return;
   }
   eval::TrajectoryEvaluation evaluation;
   evaluation.ground_truth_file = dataset.folder() / "groundtruth.txt";
+  evaluation.ground_truth_frame = dataset.groundTruthFrame();
   evaluation.estimate_file = out_dir / "CameraTrajectory.txt";
   evaluation.options = options.evaluation;
   evaluation.ground_truth = *dataset.groundTruth();
@@ -237,6 +239,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   const auto start = std::chrono::steady_clock::now();
   SequenceRunSummary summary;
   summary.frames = std::min(options.max_frames, dataset.size());
+  summary.absent_images = dataset.absentImages().size();
   std::vector<FrameStats> stats;
   std::vector<double> realtime_lag_ms;
   {
@@ -401,6 +404,10 @@ void addRpeJson(const std::optional<eval::RpeResult>& rpe, const std::string& no
 // Without ground truth the figures are left out; with it, a figure that could not be computed is
 // null with its reason beside it.
 void addEvaluationJson(const SequenceRunSummary& summary, nlohmann::json& json) {
+  if (summary.has_ground_truth) {
+    json["ground_truth"] = {{"frame", io::groundTruthFrameName(summary.ground_truth_frame)},
+                            {"poses_of", io::describeGroundTruthFrame(summary.ground_truth_frame)}};
+  }
   if (const auto& evaluation = summary.evaluation) {
     json["ate_rmse_m"] = evaluation->ate.statistics.rmse;
     addRpeJson(evaluation->rpe, evaluation->rpe_not_computed, json);
@@ -418,6 +425,7 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
                          {"tracked_frames", summary.tracked_frames},
                          {"lost_frames", summary.lost_frames},
                          {"skipped_frames", summary.skipped_frames},
+                         {"absent_images", summary.absent_images},
                          {"keyframes", summary.keyframes},
                          {"map_points", summary.map_points},
                          {"tracking_time", timingJson(summary.tracking)},

@@ -68,6 +68,9 @@ struct SequenceRunSummary {
   std::size_t tracked_frames = 0;
   std::size_t lost_frames = 0;
   std::size_t skipped_frames = 0;  // for a damaged image: never handed to masks or SLAM
+  // Listed colour and depth images the dataset lacks (io::TumDataset::absentImages): the frames
+  // they belong to are not among `frames`.
+  std::size_t absent_images = 0;
   std::size_t keyframes = 0;
   std::size_t map_points = 0;
   TimingSummary tracking;  // per frame, extraction included
@@ -91,6 +94,7 @@ struct SequenceRunSummary {
   // The ATE, and the RPE where it can be computed (evaluation->rpe_not_computed says why not).
   std::optional<eval::TrajectoryEvaluation> evaluation;
   bool has_ground_truth = false;
+  io::GroundTruthFrame ground_truth_frame = io::GroundTruthFrame::kCamera;
   std::string evaluation_not_computed;  // why there is no evaluation
   std::optional<MapSummary> map;
   std::optional<MapFileSummary> map_file;
