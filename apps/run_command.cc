@@ -30,6 +30,7 @@ std::filesystem::path defaultVocabularyFile() {
 }
 
 struct RunOptions : DatasetArguments {
+  std::size_t start_frame = 0;
   MaskArguments masks;
   system::SequenceRunOptions run;
   std::string loop_detector = "auto";
@@ -189,7 +190,7 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
 }
 
 void runCommand(RunOptions& options) {
-  const auto dataset = openDataset(options);
+  const auto dataset = openDataset(options).startingAt(options.start_frame);
   util::createOutputFolder(options.out_dir);  // before the networks load: fail early
   options.run.masks = maskSourceOptions(options.masks);
   chooseLoopDetector(options);
@@ -200,8 +201,10 @@ void runCommand(RunOptions& options) {
 
   util::addLogFile(options.out_dir / "run.log");
   io::writeCameraYaml(options.out_dir / "camera.yaml", dataset.camera());
-  spdlog::info("dataset {}: {} frames, camera {}, masks {}", options.dataset.string(),
-               dataset.size(), dataset.cameraSource(), options.masks.source);
+  spdlog::info("dataset {}: {} frames{}, camera {}, masks {}", options.dataset.string(),
+               dataset.size(),
+               options.start_frame > 0 ? fmt::format(" from frame {}", options.start_frame) : "",
+               dataset.cameraSource(), options.masks.source);
 
   util::ProgressBar progress("tracking", std::min(options.run.max_frames, dataset.size()));
   const auto summary = system::runSequence(dataset, options.run, options.out_dir,
@@ -282,6 +285,10 @@ void registerRunCommand(CLI::App& app) {
       ->excludes(deterministic)
       ->excludes(realtime);
   run->add_option("--seed", options->run.seed, "Seed of the random number generators")
+      ->capture_default_str();
+  run->add_option("--start-frame", options->start_frame,
+                  "Start at this frame of the sequence (0 = the first), as a camera switched on "
+                  "then: the frames before are not played")
       ->capture_default_str();
   run->add_option("--max-frames", options->run.max_frames, "Process at most this many frames")
       ->check(CLI::PositiveNumber);

@@ -292,6 +292,17 @@ TumDataset TumDataset::open(const fs::path& folder, const DatasetOptions& option
   return dataset;
 }
 
+TumDataset TumDataset::startingAt(std::size_t first) const {
+  if (first >= frames_.size()) {
+    throw util::Error(fmt::format("{}: cannot start at frame {}: the sequence has {} frames",
+                                  folder_.string(), first, frames_.size()));
+  }
+  TumDataset later = *this;
+  later.frames_.erase(later.frames_.begin(),
+                      later.frames_.begin() + static_cast<std::ptrdiff_t>(first));
+  return later;
+}
+
 bool TumDataset::hasMasks() const {
   // open() gives either every frame a mask or none.
   return !frames_.empty() && frames_.front().mask_path.has_value();

@@ -104,6 +104,10 @@ class TumDataset {
   // optional images, only those `layers` asks for are loaded.
   [[nodiscard]] RgbdFrame loadFrame(std::size_t i, FrameLayers layers = {}) const;
 
+  // The same sequence from frame `first` on (a camera switched on at that moment); util::Error
+  // when it has no frame `first`.
+  [[nodiscard]] TumDataset startingAt(std::size_t first) const;
+
  private:
   std::filesystem::path folder_;
   core::Camera camera_;

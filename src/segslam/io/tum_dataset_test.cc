@@ -384,6 +384,16 @@ TEST_F(TumDatasetTest, ListedMaskThatDoesNotExistNamesListAndLine) {
                                     " does not exist (or is not a file)");
 }
 
+TEST_F(TumDatasetTest, StartingAtALaterFrameKeepsTheRestAndTheGroundTruth) {
+  const auto dataset = TumDataset::open(folder_);
+  const auto later = dataset.startingAt(2);
+  ASSERT_EQ(later.size(), 2u);
+  EXPECT_NEAR(later.frames()[0].timestamp, tiny_.rgb_stamps[2], 1e-6);
+  EXPECT_EQ(later.groundTruth()->size(), dataset.groundTruth()->size());
+  EXPECT_EQ(errorMessage([&] { (void)dataset.startingAt(4); }),
+            folder_.string() + ": cannot start at frame 4: the sequence has 4 frames");
+}
+
 // A Bonn sequence's groundtruth.txt holds the markers' poses: the dataset gives the camera's.
 TEST_F(TumDatasetTest, BonnFolderGroundTruthIsConvertedToCameraPoses) {
   const fs::path bonn = temp_.path() / "rgbd_bonn_tiny";
