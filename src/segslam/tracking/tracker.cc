@@ -64,12 +64,16 @@ TrackingResult Tracker::track(map::Frame frame) {
   // A frame that loses track tries relocalisation at once: the camera may have been carried
   // elsewhere, and the frame is as good a query as the next.
   const bool relocalised = !tracked && relocalise();
-  const bool ok = (tracked || relocalised) && trackLocalMap() && (relocalised || movedPlausibly());
+  // A relocalised pose must be within reach of the last tracked one as much as a tracked pose:
+  // a lost frame's descriptors can match a person or a look-alike place anywhere in the map.
+  const bool ok = (tracked || relocalised) && trackLocalMap() && movedPlausibly();
 
   if (ok) {
     state_ = TrackingState::kOk;
     // After relocalisation the last frame's pose says nothing about the camera's motion.
     if (relocalised) {
+      spdlog::info("frame {}: relocalised against keyframe {}", current_.id,
+                   reference_keyframe_->id);
       velocity_.reset();
     } else {
       velocity_ = geometry::orthonormalised(current_.T_cw * last_.T_cw.inverse());
@@ -95,14 +99,19 @@ TrackingResult Tracker::track(map::Frame frame) {
 }
 
 bool Tracker::movedPlausibly() const {
-  if (!last_.has_pose) return true;
-  if (withinMotionLimit(last_.T_cw, last_.timestamp, current_.T_cw, current_.timestamp,
+  // The last tracked frame, placed by its reference keyframe as the map is now (a loop correction
+  // may have moved it since); none before the first or in a restored map not yet localised in.
+  if (records_.empty() || records_.back().reference->bad) return true;
+  const FramePoseRecord& last = records_.back();
+  const geometry::Pose last_T_cw = last.T_c_reference * last.reference->T_cw;
+  if (withinMotionLimit(last_T_cw, last.timestamp, current_.T_cw, current_.timestamp,
                         options_.motion_limit)) {
     return true;
   }
-  spdlog::debug("frame {}: pose {:.2f} m from the last frame's in {:.3f} s, refused", current_.id,
-                (current_.T_cw.inverse().translation() - last_.T_cw.inverse().translation()).norm(),
-                current_.timestamp - last_.timestamp);
+  spdlog::debug("frame {}: pose {:.2f} m from the last tracked frame's in {:.3f} s, refused",
+                current_.id,
+                (current_.T_cw.inverse().translation() - last_T_cw.inverse().translation()).norm(),
+                current_.timestamp - last.timestamp);
   return false;
 }
 
@@ -196,11 +205,27 @@ bool Tracker::relocalise() {
   // min_inliers_after_relocalisation. One keyframe seldom shows that many through a person or
   // motion blur, and the camera stayed lost where the local map would have found it.
   if (optimiseCurrentPose() < options_.min_inliers) return false;
+  const int checked = checkedMatches();
+  if (checked < options_.min_checked_relocalisation_inliers) {
+    spdlog::debug(
+        "frame {}: relocalisation against keyframe {} refused: {} of its inliers on "
+        "points no own mask has checked",
+        current_.id, current_.reference_keyframe->id, checked);
+    return false;
+  }
   last_relocalisation_frame_id_ = current_.id;
   reference_keyframe_ = current_.reference_keyframe;
-  spdlog::info("frame {}: relocalised against keyframe {}", current_.id,
-               current_.reference_keyframe->id);
+  spdlog::debug("frame {}: placed against keyframe {}", current_.id,
+                current_.reference_keyframe->id);
   return true;
+}
+
+int Tracker::checkedMatches() const {
+  int checked = 0;
+  for (const auto& point : current_.map_points) {
+    if (point && !point->bad && !point->provisional) ++checked;
+  }
+  return checked;
 }
 
 std::vector<std::shared_ptr<map::KeyFrame>> Tracker::relocalisationCandidates() const {

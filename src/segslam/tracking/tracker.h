@@ -36,8 +36,12 @@ struct TrackerOptions {
   // Provisional map points (MapPoint::provisional) may refine a pose but not decide it.
   CheckedPoseOptions checked_pose;
   int min_inliers_after_relocalisation = 50;
-  // A tracked pose farther from the last frame's than a camera can move is refused: the frame is
-  // lost (and relocalised) rather than made a keyframe of.
+  // Relocalisation needs this many of its inliers on points a keyframe's own mask has checked
+  // (not MapPoint::provisional): a lost frame among people can match the points a person the
+  // carried masks missed left in the map, and be placed by him.
+  int min_checked_relocalisation_inliers = 20;
+  // A pose farther from the last tracked frame's than a camera can move in the time between is
+  // refused, tracked or relocalised: the frame is lost rather than made a keyframe of.
   MotionLimitOptions motion_limit;
   // A lost frame is matched against the keyframes that look most like it (by bag of words, given
   // a vocabulary: the camera may have been carried anywhere in the map), then against the most
@@ -106,6 +110,7 @@ class Tracker {
   [[nodiscard]] std::vector<std::shared_ptr<map::KeyFrame>> relocalisationCandidates() const;
   bool trackLocalMap();
   [[nodiscard]] bool movedPlausibly() const;
+  [[nodiscard]] int checkedMatches() const;
   void addVisualOdometryPoints();
   int optimiseCurrentPose();
 
