@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "dataset_arguments.h"
+#include "occupancy_arguments.h"
 #include "segslam/system/map_rebuild.h"
 #include "segslam/util/output_folder.h"
 
@@ -36,6 +37,7 @@ void mapCommand(MapOptions& options) {
       "{:.1f} s\n  outputs    {}\n",
       s.static_points, s.dynamic_points, s.objects, s.keyframes, s.build_seconds,
       std::filesystem::absolute(options.run_dir / "map").string());
+  if (s.occupancy) printOccupancy(*s.occupancy);
 }
 
 }  // namespace
@@ -76,6 +78,7 @@ void registerMapCommand(CLI::App& app) {
                    "Neighbours of the map's statistical outlier removal (0: no removal)")
       ->capture_default_str()
       ->check(CLI::Range(0, 100));
+  addOccupancyOptions(*command, options->rebuild.occupancy);
   command->callback([options] { mapCommand(*options); });
 }
 

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "dataset_arguments.h"
 #include "mask_arguments.h"
+#include "occupancy_arguments.h"
 #include "segslam/io/camera_config.h"
 #include "segslam/io/tum_dataset.h"
 #include "segslam/place/cnn_backbone_config.h"
@@ -185,6 +186,7 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
         "({:.1f} s CPU for keyframe clouds, {:.1f} s to build)\n",
         s.map->static_points, s.map->dynamic_points, s.map->objects, s.map->keyframes,
         s.map->keyFrameSeconds(), s.map->build_seconds);
+    if (s.map->occupancy) printOccupancy(*s.map->occupancy);
   }
   fmt::print("  outputs    {}\n", std::filesystem::absolute(options.out_dir).string());
 }
@@ -298,6 +300,7 @@ void registerRunCommand(CLI::App& app) {
                   "Voxel size of the dense map (metres)")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 1.0));
+  addOccupancyOptions(*run, options->run.occupancy);
   run->add_option("--map-outlier-neighbours", options->run.map.cleaning.outlier_neighbours,
                   "Neighbours of the map's statistical outlier removal (0: no removal)")
       ->capture_default_str()

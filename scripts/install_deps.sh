@@ -9,6 +9,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev libyaml-cpp-dev libtbb-dev
   libopen3d-dev
+  # Occupancy maps: OctoMap's library, and its tools (octovis, bt2vrml) to look at the .bt files.
+  liboctomap-dev octomap-tools
   clang libclang-rt-14-dev clang-format
   libcpp-httplib-dev chromium
   # The benches: ../shared/tools makes dynamic sequences with Debian's Python OpenCV, and

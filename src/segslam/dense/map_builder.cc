@@ -181,7 +181,8 @@ void MapBuilder::foldCulled(const core::Trajectory& live, bool only_older,
 }
 
 MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe_poses,
-                                                ObjectMapBuilder& objects) const {
+                                                ObjectMapBuilder& objects,
+                                                const KeyFrameScanSink& scans) const {
   WorldClouds world;
   // The clouds unpacked, kept only while an earlier map needs them for its free-space views.
   std::deque<KeyFrameCloud> unpacked;
@@ -198,8 +199,15 @@ MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe
     objects.addKeyFrame(it->second.id, pose.timestamp, pose.T_wc, static_points, dynamic_points);
     world.object_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    world.static_points.append(static_points);
-    world.static_points.append(transformed(cloud.folded_points, pose.T_wc));
+    LabelledCloud seen = static_points;
+    seen.append(transformed(cloud.folded_points, pose.T_wc));
+    if (scans) {
+      const auto scan_start = std::chrono::steady_clock::now();
+      scans(pose.T_wc.translation(), seen, dynamic_points);
+      world.scan_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - scan_start).count();
+    }
+    world.static_points.append(seen);
     world.dynamic_points.append(dynamic_points);
   }
   if (earlier_) {
@@ -209,10 +217,10 @@ MapBuilder::WorldClouds MapBuilder::worldClouds(const core::Trajectory& keyframe
   }
   const double voxel = options_.keyframe.voxel_size;
   return {voxelDownsample(world.static_points, voxel), voxelDownsample(world.dynamic_points, voxel),
-          world.object_seconds, world.earlier_points_removed};
+          world.object_seconds, world.scan_seconds, world.earlier_points_removed};
 }
 
-DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses) {
+DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses, const KeyFrameScanSink& scans) {
   finish();
   std::unique_lock lock(mutex_);
   foldCulled(keyframe_poses, false, lock);
@@ -225,7 +233,7 @@ DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses) {
     start = now;
   };
   ObjectMapBuilder objects(camera_, options_.keyframe.max_depth, options_.objects);
-  WorldClouds world = worldClouds(keyframe_poses, objects);
+  WorldClouds world = worldClouds(keyframe_poses, objects, scans);
   map.earlier_points_removed = world.earlier_points_removed;
   map.dynamic_points = std::move(world.dynamic_points);
   lap(timings_.merging);
@@ -233,8 +241,9 @@ DenseMap MapBuilder::build(const core::Trajectory& keyframe_poses) {
   lap(timings_.outlier_removal);
   map.objects = objects.objects(map.static_points, map.voxel_size);
   lap(timings_.objects);
-  timings_.merging -= world.object_seconds;
+  timings_.merging -= world.object_seconds + world.scan_seconds;
   timings_.objects += world.object_seconds;
+  timings_.scans = world.scan_seconds;
   spdlog::debug("dense map: merging {:.3f} s, outlier removal {:.3f} s, objects {:.3f} s",
                 timings_.merging, timings_.outlier_removal, timings_.objects);
   return map;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <deque>
 #include <exception>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -26,6 +27,13 @@ struct MapBuilderOptions {
   int thread_niceness = 10;
 };
 
+// What one keyframe of the built map saw, in the world: handed to a KeyFrameScanSink by
+// MapBuilder::build (an occupancy map casts its rays from `origin`). The static points include
+// what the culled keyframes folded into it saw.
+using KeyFrameScanSink =
+    std::function<void(const Eigen::Vector3d& origin, const LabelledCloud& static_points,
+                       const LabelledCloud& dynamic_points)>;
+
 // Where map building spends its time, seconds: CPU time of the map thread for the keyframe
 // clouds (it runs beside tracking), wall time of the last build() (after tracking).
 struct MapTimings {
@@ -34,6 +42,7 @@ struct MapTimings {
   double merging = 0.0;  // keyframe clouds into the world frame, voxelised together
   double outlier_removal = 0.0;
   double objects = 0.0;
+  double scans = 0.0;  // handing the keyframes' points to a KeyFrameScanSink (occupancy)
 };
 
 // Builds the dense map of a run off the tracking thread. Keyframes are handed over as they are
@@ -70,8 +79,10 @@ class MapBuilder {
   // (camera-to-world, matched within 1e-4 s) transformed into the world, merged, voxelised once
   // more and cleaned of outliers; keyframes without a pose (culled ones) are folded into the
   // nearest live one first where their last pose is known, else left out. Objects
-  // come from the keyframes' labels (ObjectMapBuilder). Waits for the queue first.
-  [[nodiscard]] DenseMap build(const core::Trajectory& keyframe_poses);
+  // come from the keyframes' labels (ObjectMapBuilder). Each keyframe's points in the world go to
+  // `scans` too, when given. Waits for the queue first.
+  [[nodiscard]] DenseMap build(const core::Trajectory& keyframe_poses,
+                               const KeyFrameScanSink& scans = {});
 
   [[nodiscard]] std::size_t numKeyFrames();
   [[nodiscard]] MapTimings timings();
@@ -105,12 +116,14 @@ class MapBuilder {
     LabelledCloud static_points;
     LabelledCloud dynamic_points;
     double object_seconds = 0.0;  // spent associating the keyframes' objects
+    double scan_seconds = 0.0;    // spent in the KeyFrameScanSink
     std::size_t earlier_points_removed = 0;
   };
   // Both layers of every keyframe with a pose, in the world frame, voxelised together; each
   // keyframe's are handed to `objects` on the way.
   [[nodiscard]] WorldClouds worldClouds(const core::Trajectory& keyframe_poses,
-                                        ObjectMapBuilder& objects) const;
+                                        ObjectMapBuilder& objects,
+                                        const KeyFrameScanSink& scans) const;
 
   core::Camera camera_;
   KeyFrameCloudMaker maker_;

@@ -7,11 +7,22 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 MapSummary buildAndWriteMap(dense::MapBuilder& builder, const core::Trajectory& keyframe_poses,
-                            const std::filesystem::path& folder) {
+                            const std::filesystem::path& folder,
+                            const OccupancyOutputOptions& occupancy) {
   const auto start = std::chrono::steady_clock::now();
-  const dense::DenseMap map = builder.build(keyframe_poses);
+  std::optional<OccupancyOutput> occupancy_output;
+  if (occupancy.build) occupancy_output.emplace(occupancy);
+  dense::KeyFrameScanSink scans;
+  if (occupancy_output) {
+    scans = [&](const Eigen::Vector3d& origin, const dense::LabelledCloud& static_points,
+                const dense::LabelledCloud& dynamic_points) {
+      occupancy_output->scan(origin, static_points, dynamic_points);
+    };
+  }
+  const dense::DenseMap map = builder.build(keyframe_poses, scans);
   dense::writeDenseMap(map, folder);
   MapSummary summary;
+  if (occupancy_output) summary.occupancy = occupancy_output->write(folder, keyframe_poses);
   summary.keyframes = builder.numKeyFrames();
   summary.static_points = map.static_points.size();
   summary.dynamic_points = map.dynamic_points.size();
@@ -35,7 +46,8 @@ nlohmann::json toJson(const MapSummary& summary) {
             {"keyframe_voxels_cpu_s", summary.timings.keyframe_voxels},
             {"merging_s", summary.timings.merging},
             {"outlier_removal_s", summary.timings.outlier_removal},
-            {"objects_s", summary.timings.objects}}}};
+            {"objects_s", summary.timings.objects}}},
+          {"occupancy", summary.occupancy ? toJson(*summary.occupancy) : nlohmann::json(nullptr)}};
 }
 
 }  // namespace segslam::system

@@ -4,9 +4,11 @@
 #include <cstddef>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "segslam/core/trajectory.h"
 #include "segslam/dense/map_builder.h"
+#include "segslam/system/occupancy_output.h"
 
 namespace segslam::system {
 
@@ -18,6 +20,7 @@ struct MapSummary {
   std::size_t earlier_points_removed = 0;  // of a loaded map's dense map, seen through
   dense::MapTimings timings;
   double build_seconds = 0.0;  // waiting for that thread, assembling, cleaning, writing
+  std::optional<OccupancySummary> occupancy;
 
   // CPU time spent on the keyframe clouds (mostly on the map thread, beside tracking).
   [[nodiscard]] double keyFrameSeconds() const {
@@ -25,9 +28,11 @@ struct MapSummary {
   }
 };
 
-// Builds the map from the keyframe poses and writes it into `folder` (see dense::writeDenseMap).
+// Builds the map from the keyframe poses and writes it into `folder` (see dense::writeDenseMap),
+// with the occupancy map of the same keyframes unless `occupancy.build` is off.
 MapSummary buildAndWriteMap(dense::MapBuilder& builder, const core::Trajectory& keyframe_poses,
-                            const std::filesystem::path& folder);
+                            const std::filesystem::path& folder,
+                            const OccupancyOutputOptions& occupancy);
 
 nlohmann::json toJson(const MapSummary& summary);
 

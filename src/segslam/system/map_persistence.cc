@@ -94,6 +94,19 @@ std::optional<dense::LabelledCloud> linkedDenseMap(const LoadedMap& loaded,
   return dense::readPly(points);
 }
 
+std::optional<std::filesystem::path> linkedOccupancyMap(const LoadedMap& loaded,
+                                                        const std::filesystem::path& file) {
+  const std::string& folder = loaded.contents.identity.dense_map;
+  if (folder.empty()) return std::nullopt;
+  const std::filesystem::path occupancy = std::filesystem::path(folder) / kOccupancyFile;
+  if (!std::filesystem::exists(occupancy)) {
+    spdlog::warn("{}: its map folder {} holds no occupancy map; this run's holds only what it sees",
+                 file.string(), folder);
+    return std::nullopt;
+  }
+  return occupancy;
+}
+
 std::uintmax_t saveMapOf(const SlamSystem& slam, const std::filesystem::path& file,
                          const map::MapFileIdentity& identity, const LoadedMap* loaded) {
   map::MapFileContents contents = slam.captureMap();

@@ -7,6 +7,7 @@
 
 #include "segslam/dense/labelled_cloud.h"
 #include "segslam/map/map_file.h"
+#include "segslam/system/occupancy_output.h"
 #include "segslam/system/slam_system.h"
 
 namespace segslam::system {
@@ -46,6 +47,12 @@ LoadedMap loadMapInto(SlamSystem& slam, const std::filesystem::path& file,
 // to a map that is no longer there is named in a warning and the run goes on without it.
 std::optional<dense::LabelledCloud> linkedDenseMap(const LoadedMap& loaded,
                                                    const std::filesystem::path& file);
+
+// The occupancy map beside that dense map (identity.dense_map / occupancy.bt), for this run's to
+// carry on; none when the loaded map links no dense map or its folder holds no occupancy map
+// (named in a warning).
+std::optional<std::filesystem::path> linkedOccupancyMap(const LoadedMap& loaded,
+                                                        const std::filesystem::path& file);
 
 // Writes the map of `slam` to `file` and returns its size. A map that was loaded keeps its sensor
 // and, when the run added no keyframe (localisation only), its whole identity, so that the file

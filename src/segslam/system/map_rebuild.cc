@@ -70,7 +70,7 @@ MapSummary rebuildMap(const io::TumDataset& dataset, const std::filesystem::path
     if (network) network->label(images);
     builder.addKeyFrame(id++, keyframe.timestamp, std::move(images));
   }
-  MapSummary summary = buildAndWriteMap(builder, keyframes, run_dir / "map");
+  MapSummary summary = buildAndWriteMap(builder, keyframes, run_dir / "map", options.occupancy);
   summary.build_seconds = secondsSince(start);
   return summary;
 }

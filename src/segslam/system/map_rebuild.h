@@ -11,6 +11,7 @@ namespace segslam::system {
 
 struct MapRebuildOptions {
   dense::MapBuilderOptions map;
+  OccupancyOutputOptions occupancy;
   // Dynamic masks of the keyframes: the dataset's mask.txt (true) or none.
   bool oracle_masks = false;
   // With a model config: the network segments every keyframe itself (nothing is carried over

@@ -229,6 +229,14 @@ nlohmann::json mapFileJson(const MapFileSummary& m) {
   return json;
 }
 
+// The run's occupancy options; with a loaded map, its session's occupancy map carries on.
+OccupancyOutputOptions occupancyOptions(const SequenceRunOptions& options,
+                                        const std::optional<LoadedMap>& loaded) {
+  OccupancyOutputOptions occupancy = options.occupancy;
+  if (loaded) occupancy.earlier = linkedOccupancyMap(*loaded, *options.map_file.load);
+  return occupancy;
+}
+
 }  // namespace
 
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
@@ -326,7 +334,8 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
                            "segslam keyframe trajectory");
     summary.outputs = {out_dir / "CameraTrajectory.txt", out_dir / "KeyFrameTrajectory.txt"};
     if (map_builder) {
-      summary.map = buildAndWriteMap(*map_builder, slam.keyFrameTrajectory(), out_dir / "map");
+      summary.map = buildAndWriteMap(*map_builder, slam.keyFrameTrajectory(), out_dir / "map",
+                                     occupancyOptions(options, loaded));
       summary.outputs.push_back(out_dir / "map");
     }
     if (summary.map_file) {

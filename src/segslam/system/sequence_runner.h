@@ -14,6 +14,7 @@
 #include "segslam/system/map_output.h"
 #include "segslam/system/map_persistence.h"
 #include "segslam/system/mask_source.h"
+#include "segslam/system/occupancy_output.h"
 #include "segslam/system/slam_system.h"
 
 namespace segslam::system {
@@ -27,6 +28,9 @@ struct SequenceRunOptions {
   // Dense map of the keyframes (map/ in the run folder); its mask dilation is the SLAM one.
   bool build_map = true;
   dense::MapBuilderOptions map;
+  // The occupancy map built with the dense map (map/occupancy.bt, the floor grid); with
+  // map_file.load it carries on the loaded session's.
+  OccupancyOutputOptions occupancy;
   // Frames are handed to SLAM no earlier than a camera would deliver them (the dataset's
   // timestamps, from the first frame on) instead of as fast as they load: the timing a robot
   // sees, where the segmentation network has the frame interval to keep up.
