@@ -17,6 +17,24 @@ struct EvalMapOptions : DatasetArguments {
   system::MapEvaluationOptions evaluation;
 };
 
+void printOccupancy(const system::OccupancyEvaluation& o) {
+  fmt::print("  occupancy           {} occupied voxels of {:.2f} m in {}\n", o.occupied_voxels,
+             o.resolution_m, o.file.string());
+  if (o.on_people_share) {
+    fmt::print("  occupied on people  {:.3f} % of the occupied voxels ({})\n",
+               100.0 * *o.on_people_share, *o.on_people_voxels);
+  }
+  if (o.reference) {
+    fmt::print(
+        "  ghosts              {:.3f} % of the occupied voxels ({}) are free in {}; {:.3f} % "
+        "({}) have no occupied voxel of it within one voxel\n",
+        100.0 * *o.ghost_share, *o.ghost_voxels, o.reference->string(),
+        100.0 * *o.ghost_beyond_a_voxel_share, *o.ghost_beyond_a_voxel_voxels);
+    fmt::print("  kept                {:.1f} % of its {} occupied voxels occupied within a voxel\n",
+               100.0 * *o.kept_share, *o.reference_occupied_voxels);
+  }
+}
+
 void printEvaluation(const system::MapEvaluation& e, const system::MapEvaluationOptions& o) {
   fmt::print("segslam eval map: {} ({} points, trajectory ATE {:.4f} m)\n", e.map_file.string(),
              e.static_points, e.trajectory_ate_rmse);
@@ -35,6 +53,7 @@ void printEvaluation(const system::MapEvaluation& e, const system::MapEvaluation
         100.0 * *e.near_person_path_share, *e.near_person_path_points, o.person_radius,
         o.person_height);
   }
+  if (const auto& occupancy = e.occupancy) printOccupancy(*occupancy);
 }
 
 void evalMapCommand(EvalMapOptions& options) {
@@ -85,6 +104,12 @@ void registerEvalMapCommand(CLI::App& eval) {
   command->add_option("--person-height", e.person_height, "Height of the person band (m)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--occupancy-reference", e.occupancy_reference_run,
+                   "Run folder of the same frames without people: the run's occupancy map is "
+                   "scored against its map/occupancy.bt (ghosts: occupied where it is free; "
+                   "kept: its occupied voxels occupied here)")
+      ->check(CLI::ExistingDirectory);
   command->callback([options] { evalMapCommand(*options); });
 }
 

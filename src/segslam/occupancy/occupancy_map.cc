@@ -36,25 +36,6 @@ std::unique_ptr<octomap::OcTree> makeTree(const OccupancyOptions& options) {
   return tree;
 }
 
-// Calls `visit(centre)` for every voxel at the tree's finest resolution whose occupancy is
-// `occupied`; a pruned leaf stands for all the voxels of its cube.
-template <typename Visit>
-void forEachVoxel(const octomap::OcTree& tree, bool occupied, const Visit& visit) {
-  const double resolution = tree.getResolution();
-  for (auto it = tree.begin_leafs(); it != tree.end_leafs(); ++it) {
-    if (tree.isNodeOccupied(*it) != occupied) continue;
-    const double size = it.getSize();
-    const int per_side = static_cast<int>(std::lround(size / resolution));
-    const Eigen::Vector3d corner =
-        fromOctomap(it.getCoordinate()) - Eigen::Vector3d::Constant(size / 2.0 - resolution / 2.0);
-    for (int i = 0; i < per_side; ++i) {
-      for (int j = 0; j < per_side; ++j) {
-        for (int k = 0; k < per_side; ++k) visit(corner + resolution * Eigen::Vector3d(i, j, k));
-      }
-    }
-  }
-}
-
 // The header of a binary octree file, as OctoMap writes it: its first line, then `key value`
 // lines up to `data`, among them `id OcTree`, the node count `size` and a positive `res`.
 struct OctreeHeader {
@@ -129,9 +110,12 @@ void OccupancyMap::insert(const Scan& scan) {
     if (!tree_->coordToKeyChecked(end, end_key)) return;
     if (!ends_seen.insert(end_key).second) return;
     if (surface && within) occupied.insert(end_key);
-    if (tree_->computeRayKeys(origin, tree_->keyToCoord(end_key), ray)) {
-      free.insert(ray.begin(), ray.end());
-    }
+    const octomap::point3d to_end = tree_->keyToCoord(end_key) - origin;
+    const double length = to_end.norm();
+    const double margin = surface ? options_.surface_margin_m : 0.0;
+    if (length <= margin) return;
+    const octomap::point3d stop = origin + to_end * static_cast<float>((length - margin) / length);
+    if (tree_->computeRayKeys(origin, stop, ray)) free.insert(ray.begin(), ray.end());
   };
   // Surfaces first: a voxel that one ray ends in and another passes through stays occupied.
   for (const auto& end : scan.static_ends) castTo(end, true);
@@ -177,22 +161,15 @@ void OccupancyMap::write(const std::filesystem::path& file) const {
 double OccupancyMap::resolution() const { return tree_->getResolution(); }
 
 OccupancyCounts OccupancyMap::counts() const {
-  OccupancyCounts counts;
-  forEachVoxel(*tree_, true, [&](const Eigen::Vector3d&) { ++counts.occupied; });
-  forEachVoxel(*tree_, false, [&](const Eigen::Vector3d&) { ++counts.free; });
-  return counts;
+  return {voxelCentres(*tree_, true).size(), voxelCentres(*tree_, false).size()};
 }
 
 std::vector<Eigen::Vector3d> OccupancyMap::occupiedVoxels() const {
-  std::vector<Eigen::Vector3d> centres;
-  forEachVoxel(*tree_, true, [&](const Eigen::Vector3d& centre) { centres.push_back(centre); });
-  return centres;
+  return voxelCentres(*tree_, true);
 }
 
 std::vector<Eigen::Vector3d> OccupancyMap::freeVoxels() const {
-  std::vector<Eigen::Vector3d> centres;
-  forEachVoxel(*tree_, false, [&](const Eigen::Vector3d& centre) { centres.push_back(centre); });
-  return centres;
+  return voxelCentres(*tree_, false);
 }
 
 std::unique_ptr<octomap::OcTree> readOctree(const std::filesystem::path& file) {
@@ -209,6 +186,32 @@ std::unique_ptr<octomap::OcTree> readOctree(const std::filesystem::path& file) {
                              tree->size(), header.size));
   }
   return tree;
+}
+
+std::vector<Eigen::Vector3d> voxelCentres(const octomap::OcTree& tree, bool occupied) {
+  std::vector<Eigen::Vector3d> centres;
+  const double resolution = tree.getResolution();
+  for (auto it = tree.begin_leafs(); it != tree.end_leafs(); ++it) {
+    if (tree.isNodeOccupied(*it) != occupied) continue;
+    const double size = it.getSize();
+    const int per_side = static_cast<int>(std::lround(size / resolution));
+    const Eigen::Vector3d corner =
+        fromOctomap(it.getCoordinate()) - Eigen::Vector3d::Constant(size / 2.0 - resolution / 2.0);
+    for (int i = 0; i < per_side; ++i) {
+      for (int j = 0; j < per_side; ++j) {
+        for (int k = 0; k < per_side; ++k) {
+          centres.push_back(corner + resolution * Eigen::Vector3d(i, j, k));
+        }
+      }
+    }
+  }
+  return centres;
+}
+
+VoxelState stateAt(const octomap::OcTree& tree, const Eigen::Vector3d& point) {
+  const octomap::OcTreeNode* node = tree.search(point.x(), point.y(), point.z());
+  if (node == nullptr) return VoxelState::kUnknown;
+  return tree.isNodeOccupied(node) ? VoxelState::kOccupied : VoxelState::kFree;
 }
 
 }  // namespace segslam::occupancy

@@ -17,6 +17,11 @@ struct OccupancyOptions {
   // Rays are cast this far at most; a depth beyond it marks the ray free up to it and nothing
   // occupied. 0 = no limit.
   double max_range_m = 5.0;
+  // A ray to a surface clears space up to this much before it: a surface that depth noise and a
+  // centimetre of pose error place in the voxel before is not carved away by the next ray (two
+  // runs of the same frames: 12.6 % of one's occupied voxels free in the other without a margin,
+  // 9.3 % with 0.1 m).
+  double surface_margin_m = 0.1;
   // OctoMap's sensor model: the probability that a voxel is occupied after one hit or one miss,
   // and the clamping bounds that keep it able to change its mind.
   double probability_hit = 0.7;
@@ -80,5 +85,12 @@ class OccupancyMap {
 // Reads an OctoMap .bt file (ours or any other) into an octree; util::Error naming the file when
 // it is missing or not a binary octree.
 std::unique_ptr<octomap::OcTree> readOctree(const std::filesystem::path& file);
+
+// Centres of the occupied (or free) voxels of an octree at its finest resolution: a pruned leaf
+// stands for every voxel of its cube.
+std::vector<Eigen::Vector3d> voxelCentres(const octomap::OcTree& tree, bool occupied);
+
+enum class VoxelState { kUnknown, kFree, kOccupied };
+[[nodiscard]] VoxelState stateAt(const octomap::OcTree& tree, const Eigen::Vector3d& point);
 
 }  // namespace segslam::occupancy

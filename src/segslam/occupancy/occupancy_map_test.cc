@@ -24,12 +24,10 @@ std::vector<Eigen::Vector3f> rectangle(double x0, double x1, double y0, double y
   return ends;
 }
 
-enum class State { kUnknown, kFree, kOccupied };
+using State = VoxelState;
 
 State stateAt(const OccupancyMap& map, double x, double y, double z) {
-  const octomap::OcTreeNode* node = map.tree().search(x, y, z);
-  if (node == nullptr) return State::kUnknown;
-  return map.tree().isNodeOccupied(node) ? State::kOccupied : State::kFree;
+  return occupancy::stateAt(map.tree(), Eigen::Vector3d(x, y, z));
 }
 
 // A wall 3 m in front of the camera; a person stands 1.5 m in front of it in the first views.

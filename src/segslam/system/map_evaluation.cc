@@ -19,6 +19,7 @@
 #include "segslam/dense/ply_io.h"
 #include "segslam/eval/ate.h"
 #include "segslam/io/trajectory_io.h"
+#include "segslam/system/occupancy_output.h"
 #include "segslam/util/error.h"
 
 namespace segslam::system {
@@ -89,6 +90,7 @@ void markOnDynamic(const std::vector<Eigen::Vector3f>& points, const io::RgbdFra
 
 struct GroundTruthComparison {
   std::vector<Eigen::Vector3f> static_surface;
+  std::vector<Eigen::Vector3f> dynamic_surface;  // the moving objects', 2 cm grid
   std::size_t on_dynamic_points = 0;
 };
 
@@ -104,6 +106,7 @@ GroundTruthComparison compareWithFrames(const io::TumDataset& dataset,
   cloud_options.mask_dilation_px = 0;
   const dense::KeyFrameCloudMaker maker(dataset.camera(), cloud_options);
   dense::LabelledCloud static_surface;
+  dense::LabelledCloud dynamic_surface;
   std::vector<std::uint8_t> on_dynamic(map_points.size(), 0);
   for (std::size_t i = 0; i < dataset.size(); ++i) {
     const auto T_wc = groundTruthPose(*dataset.groundTruth(), dataset.frames()[i].timestamp);
@@ -120,10 +123,14 @@ GroundTruthComparison compareWithFrames(const io::TumDataset& dataset,
     if (!frame.mask.empty() && cv::countNonZero(frame.mask) > 0) {
       markOnDynamic(map_points, frame, *T_wc, dataset.camera(), options.on_dynamic_distance,
                     on_dynamic);
+      const auto cloud = maker.make({frame.rgb, frame.depth, frame.mask, {}, {}});
+      dynamic_surface.append(
+          dense::voxelDownsample(dense::transformed(cloud.dynamic_points, *T_wc), 0.02));
     }
   }
   GroundTruthComparison comparison;
   comparison.static_surface = dense::voxelDownsample(static_surface, 0.01).points;
+  comparison.dynamic_surface = dense::voxelDownsample(dynamic_surface, 0.02).points;
   comparison.on_dynamic_points =
       static_cast<std::size_t>(std::count(on_dynamic.begin(), on_dynamic.end(), 1));
   return comparison;
@@ -226,6 +233,14 @@ eval::Alignment poseAlignment(const core::Trajectory& ground_truth,
   return alignment;
 }
 
+// The reference run's occupancy map, aligned onto the ground truth as a run's map is.
+AlignedOccupancy referenceOccupancy(const io::TumDataset& dataset,
+                                    const std::filesystem::path& run_dir) {
+  const auto estimate = io::readTumTrajectory(run_dir / "CameraTrajectory.txt");
+  const auto ate = eval::evaluateAte(*dataset.groundTruth(), estimate);
+  return {run_dir / "map" / kOccupancyFile, poseAlignment(*dataset.groundTruth(), estimate, ate)};
+}
+
 double share(std::size_t part, std::size_t whole) {
   return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
 }
@@ -247,8 +262,10 @@ MapEvaluation evaluateMap(const io::TumDataset& dataset, const std::filesystem::
   for (auto& p : map_points) p = alignment.apply(p.cast<double>()).cast<float>();
   evaluation.static_points = map_points.size();
 
+  std::optional<GroundTruthComparison> truth_surfaces;
   if (dataset.hasMasks()) {
-    const auto truth = compareWithFrames(dataset, map_points, options);
+    truth_surfaces = compareWithFrames(dataset, map_points, options);
+    const auto& truth = *truth_surfaces;
     evaluation.on_dynamic_points = truth.on_dynamic_points;
     evaluation.on_dynamic_share = share(*evaluation.on_dynamic_points, map_points.size());
     const dense::NearestNeighbours map_index(map_points);
@@ -272,6 +289,17 @@ MapEvaluation evaluateMap(const io::TumDataset& dataset, const std::filesystem::
     evaluation.near_person_path_points = near;
     evaluation.near_person_path_share = share(near, map_points.size());
   }
+
+  const auto occupancy_file = run_dir / "map" / kOccupancyFile;
+  if (std::filesystem::exists(occupancy_file)) {
+    std::optional<AlignedOccupancy> reference;
+    if (options.occupancy_reference_run) {
+      reference = referenceOccupancy(dataset, *options.occupancy_reference_run);
+    }
+    evaluation.occupancy =
+        evaluateOccupancy({occupancy_file, alignment},
+                          truth_surfaces ? &truth_surfaces->dynamic_surface : nullptr, reference);
+  }
   return evaluation;
 }
 
@@ -294,6 +322,7 @@ nlohmann::json toJson(const MapEvaluation& evaluation, const MapEvaluationOption
     json["person_radius_m"] = options.person_radius;
     json["person_height_m"] = options.person_height;
   }
+  if (evaluation.occupancy) json["occupancy"] = toJson(*evaluation.occupancy);
   return json;
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "segslam/io/tum_dataset.h"
+#include "segslam/system/occupancy_evaluation.h"
 
 namespace segslam::system {
 
@@ -25,6 +26,9 @@ struct MapEvaluationOptions {
   // person_height: the vertical band the person sweeps.
   double person_radius = 0.3;
   double person_height = 2.0;
+  // A run of the same frames without people, whose occupancy map the run's is scored against
+  // (ghosts and kept, OccupancyEvaluation).
+  std::optional<std::filesystem::path> occupancy_reference_run;
 };
 
 struct MapEvaluation {
@@ -40,9 +44,12 @@ struct MapEvaluation {
   // With persons_gt.txt:
   std::optional<std::size_t> near_person_path_points;
   std::optional<double> near_person_path_share;
+  // When the run has map/occupancy.bt.
+  std::optional<OccupancyEvaluation> occupancy;
 };
 
-// Scores <run>/map/static.ply against the dataset's ground truth, in the ground-truth frame (the
+// Scores <run>/map/static.ply (and map/occupancy.bt, when there is one) against the dataset's
+// ground truth, in the ground-truth frame (the
 // rigid motion that best maps the poses of the run's CameraTrajectory.txt onto those of
 // groundtruth.txt, rotations included, so that short runs are aligned too). Throws util::Error
 // when files are missing or malformed or the dataset lacks ground truth.
