@@ -15,6 +15,7 @@ void bindTrajectory(py::module_& module);
 void bindDataset(py::module_& module);
 void bindSegmenter(py::module_& module);
 void bindDenseMap(py::module_& module);
+void bindOccupancy(py::module_& module);
 void bindSystem(py::module_& module);
 void bindEvaluation(py::module_& module);
 

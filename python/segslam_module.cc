@@ -46,6 +46,7 @@ PYBIND11_MODULE(segslam, module) {
   segslam::python::bindDataset(module);
   segslam::python::bindSegmenter(module);
   segslam::python::bindDenseMap(module);
+  segslam::python::bindOccupancy(module);
   segslam::python::bindSystem(module);
   segslam::python::bindEvaluation(module);
 }

@@ -91,3 +91,17 @@ def test_segmenter_gives_mask_and_labels(synthetic_sequence):
         segmenter.segment(rgb.astype(np.float32))
     with pytest.raises(ValueError, match="shape"):
         segmenter.segment(rgb[:, :, :2])
+
+
+def test_the_occupancy_map_of_a_run_reads_into_numpy(cli, synthetic_sequence, tmp_path):
+    run = run_cli(cli, synthetic_sequence, tmp_path / "run", "--seg", "oracle", "--loop-detector",
+                  "vote")
+    occupancy = segslam.OccupancyMap(run / "map" / "occupancy.bt")
+    assert occupancy.resolution == pytest.approx(0.05)
+    assert occupancy.occupied.shape[1] == 3 and len(occupancy.occupied) > 100
+    assert len(occupancy.free) > len(occupancy.occupied)
+    states = occupancy.state(np.vstack([occupancy.occupied[:3], occupancy.free[:3],
+                                        [[1e3, 1e3, 1e3]]]))
+    assert states.tolist() == [1, 1, 1, 0, 0, 0, -1]
+    with pytest.raises(ValueError, match="occupancy.json: not an OctoMap binary occupancy map"):
+        segslam.OccupancyMap(run / "map" / "occupancy.json")

@@ -6,7 +6,10 @@ import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import { parsePly } from "./ply.js";
 import { parseTum } from "./tum.js";
 
-const COLOURS = { static: 0x9aa0aa, estimate: 0xff8c1a, ground_truth: 0x3ad17a, keyframes: 0x4aa3ff, dynamic: 0xff3b6b };
+const COLOURS = {
+  static: 0x9aa0aa, estimate: 0xff8c1a, ground_truth: 0x3ad17a, keyframes: 0x4aa3ff, dynamic: 0xff3b6b,
+  occupied: 0xc9a227, floor_grid: 0x6fd3ff,
+};
 const LABEL_PALETTE = [0xe6194b, 0x3cb44b, 0xffe119, 0x4363d8, 0xf58231, 0x911eb4, 0x46f0f0,
   0xf032e6, 0xbcf60c, 0xfabebe, 0x008080, 0xe6beff, 0x9a6324, 0xaaffc3, 0x808000, 0xffd8b1];
 
@@ -197,6 +200,7 @@ function stats() {
   result.trajectories = {
     estimate: visible("estimate"), ground_truth: visible("ground_truth"), keyframes: visible("keyframes"),
   };
+  result.occupancy = { voxels: visible("occupied"), grid_cells: visible("floor_grid") };
   return result;
 }
 
@@ -274,6 +278,96 @@ async function loadMap(map) {
   }
   if (map.objects.length) addLayer("boxes", "Object boxes", boxes, 0, null);
   addObjectControls();
+  await loadOccupancy(map.occupancy);
+}
+
+// An 8-bit binary PGM (P5), as map_server reads the floor grid: { width, height, pixels }.
+function parsePgm(buffer, url) {
+  const bytes = new Uint8Array(buffer);
+  const fields = [];
+  let at = 0;
+  while (fields.length < 4 && at < bytes.length) {
+    while (at < bytes.length && /\s/.test(String.fromCharCode(bytes[at]))) at += 1;
+    if (bytes[at] === 0x23) {  // a comment runs to the end of its line
+      while (at < bytes.length && bytes[at] !== 0x0a) at += 1;
+      continue;
+    }
+    let field = "";
+    while (at < bytes.length && !/\s/.test(String.fromCharCode(bytes[at]))) field += String.fromCharCode(bytes[at++]);
+    fields.push(field);
+  }
+  const [magic, width, height, maximum] = [fields[0], Number(fields[1]), Number(fields[2]), Number(fields[3])];
+  if (magic !== "P5" || !(width > 0) || !(height > 0) || maximum > 255) throw new Error(`${url}: not an 8-bit binary PGM`);
+  const pixels = bytes.subarray(at + 1, at + 1 + width * height);
+  if (pixels.length !== width * height) throw new Error(`${url}: cut short`);
+  return { width, height, pixels };
+}
+
+// Occupied voxels as cubes of the map's resolution, shaded by height along the floor's up.
+function voxelCubes(ply, info) {
+  const size = info.resolution_m;
+  const mesh = new THREE.InstancedMesh(new THREE.BoxGeometry(size, size, size),
+    new THREE.MeshBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.55 }), ply.count);
+  const up = new THREE.Vector3(...info.grid.up);
+  const heights = [];
+  for (let i = 0; i < ply.count; ++i) heights.push(up.dot(new THREE.Vector3(...ply.positions.slice(3 * i, 3 * i + 3))));
+  const low = Math.min(...heights);
+  const span = Math.max(Math.max(...heights) - low, 1e-6);
+  const matrix = new THREE.Matrix4();
+  const colour = new THREE.Color();
+  for (let i = 0; i < ply.count; ++i) {
+    matrix.makeTranslation(ply.positions[3 * i], ply.positions[3 * i + 1], ply.positions[3 * i + 2]);
+    mesh.setMatrixAt(i, matrix);
+    mesh.setColorAt(i, colour.setHSL(0.12 - 0.12 * (heights[i] - low) / span, 0.75, 0.5));
+  }
+  return mesh;
+}
+
+// The floor grid as a textured plane at the floor's height: occupied cells dark red, free ones
+// pale green, unknown ones left out.
+function floorGridPlane(pgm, info) {
+  const { rows, cols, resolution_m: cell, origin, u_axis: u, v_axis: v, up, floor_height_m: floor } = info.grid;
+  const rgba = new Uint8Array(rows * cols * 4);
+  let occupied = 0;
+  for (let row = 0; row < rows; ++row) {
+    for (let col = 0; col < cols; ++col) {
+      const value = pgm.pixels[row * cols + col];
+      // Texture rows run from the plane's bottom (low v) up; the image's from the top.
+      const at = 4 * ((rows - 1 - row) * cols + col);
+      if (value === 0) {
+        rgba.set([200, 40, 40, 230], at);
+        occupied += 1;
+      } else if (value === 254) {
+        rgba.set([120, 220, 140, 110], at);
+      }
+    }
+  }
+  const texture = new THREE.DataTexture(rgba, cols, rows, THREE.RGBAFormat);
+  texture.magFilter = THREE.NearestFilter;
+  texture.needsUpdate = true;
+  const plane = new THREE.Mesh(new THREE.PlaneGeometry(cols * cell, rows * cell),
+    new THREE.MeshBasicMaterial({ map: texture, transparent: true, side: THREE.DoubleSide, depthWrite: false }));
+  // The plane's x, y, z axes are the grid's u, v and up; its centre the grid's centre.
+  const basis = new THREE.Matrix4().makeBasis(new THREE.Vector3(...u), new THREE.Vector3(...v), new THREE.Vector3(...up));
+  const centre = new THREE.Vector3(...u).multiplyScalar(origin[0] + cols * cell / 2)
+    .add(new THREE.Vector3(...v).multiplyScalar(origin[1] + rows * cell / 2))
+    .add(new THREE.Vector3(...up).multiplyScalar(floor));
+  plane.applyMatrix4(basis.setPosition(centre));
+  return { plane, occupied };
+}
+
+async function loadOccupancy(occupancy) {
+  if (!occupancy) return;
+  const info = await fetchOk(occupancy.info, "json");
+  const ply = parsePly(await fetchOk(occupancy.voxels, "buffer"), occupancy.voxels);
+  addLayer("occupied", `Occupied voxels (${ply.count.toLocaleString()}, ${info.resolution_m} m)`,
+    voxelCubes(ply, info), ply.count, COLOURS.occupied);
+  if (occupancy.grid) {
+    const pgm = parsePgm(await fetchOk(occupancy.grid, "buffer"), occupancy.grid);
+    const { plane, occupied } = floorGridPlane(pgm, info);
+    addLayer("floor_grid", `Floor grid (${pgm.width} x ${pgm.height}, ${occupied.toLocaleString()} obstacle cells)`,
+      plane, pgm.width * pgm.height, COLOURS.floor_grid);
+  }
 }
 
 // A layer per session of a saved map (map_sessions/ of the run): the map points and keyframe

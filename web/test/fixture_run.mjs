@@ -70,4 +70,27 @@ export function writeFixtureRun(dir, withMap) {
     });
   }
   writeFileSync(join(dir, "map", "objects.json"), JSON.stringify(index, null, 1));
+  writeOccupancy(join(dir, "map"));
+}
+
+// An occupancy map as system::OccupancyOutput writes it: the occupied voxels' centres (a wall of
+// 10 x 4 voxels), occupancy.json with the floor grid's frame, and a 6 x 4 grid (P5 PGM) with
+// 5 occupied cells, 12 free and 7 unknown.
+function writeOccupancy(mapDir) {
+  const voxels = [];
+  for (let i = 0; i < 10; ++i) {
+    for (let j = 0; j < 4; ++j) voxels.push([-0.5 + 0.1 * i, 0.6 - 0.1 * j, 2.5, 200, 200, 200]);
+  }
+  writeFileSync(join(mapDir, "occupancy_occupied.ply"), plyBytes(voxels));
+  const cells = [0, 0, 0, 0, 0, 254, 254, 254, 254, 254, 254, 254, 254, 254, 254, 254, 254,
+    205, 205, 205, 205, 205, 205, 205];
+  writeFileSync(join(mapDir, "occupancy_2d.pgm"),
+    Buffer.concat([Buffer.from("P5\n# segslam\n6 4\n255\n", "latin1"), Buffer.from(cells)]));
+  writeFileSync(join(mapDir, "occupancy.json"), JSON.stringify({
+    resolution_m: 0.1, occupied_voxels: voxels.length, free_voxels: 500,
+    grid: {
+      image: "occupancy_2d.pgm", rows: 4, cols: 6, resolution_m: 0.1, origin: [-0.3, 1.0],
+      u_axis: [1, 0, 0], v_axis: [0, 0, 1], up: [0, -1, 0], floor_height_m: -1.0,
+    },
+  }));
 }

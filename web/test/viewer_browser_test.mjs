@@ -92,6 +92,15 @@ async function checkMapRun(browser, runDir, screenshot) {
       `map loaded: ${before.static} static, ${before.dynamic} dynamic, ${before.objects} object points drawn`);
     check(before.trajectories.estimate === 30 && before.trajectories.ground_truth === 30 &&
       before.trajectories.keyframes === 6, "estimate, ground truth and keyframes drawn");
+    check(before.occupancy.voxels === 40 && before.occupancy.grid_cells === 24,
+      `occupancy drawn: ${before.occupancy.voxels} occupied voxels, a floor grid of ${before.occupancy.grid_cells} cells`);
+    const occupancyRows = await page.$$eval("#layers label", (labels) => labels.map((label) => label.textContent));
+    check(occupancyRows.some((row) => row.startsWith("Occupied voxels (40, 0.1 m)")) &&
+      occupancyRows.some((row) => row.startsWith("Floor grid (6 x 4, 5 obstacle cells)")),
+    `occupancy layers listed: ${JSON.stringify(occupancyRows.slice(-2))}`);
+    await page.click('input[data-layer="occupied"]');
+    check((await stats(page)).occupancy.voxels === 0, "occupied voxels toggle off");
+    await page.click('input[data-layer="occupied"]');
     const rows = await page.$$eval("#objects label", (labels) => labels.map((label) => label.textContent));
     check(rows[0].startsWith("chair (2)") && rows[1].startsWith("chair_1") && rows[1].includes("90 %") &&
       rows[2].startsWith("chair_2") && rows[2].includes("75 %") && rows[3].startsWith("person (1)"),

@@ -28,11 +28,11 @@ struct OccupancyOptions {
   double probability_miss = 0.4;
   double clamping_min = 0.12;
   double clamping_max = 0.97;
-  // An earlier session's voxels are believed this much when they are loaded (LoadedBelief):
-  // evidence of this session, a few rays through a voxel or a few hits in it, outweighs them,
-  // so that a chair moved since leaves its old place and shows up at its new one.
-  double earlier_belief_occupied = 0.7;
-  double earlier_belief_free = 0.4;
+  // An earlier session's voxels are believed this much when they are loaded: one ray of this
+  // session through an occupied one clears it, one hit in a free one fills it, so that a chair
+  // moved since leaves its old place and shows up at its new one.
+  double earlier_belief_occupied = 0.58;
+  double earlier_belief_free = 0.45;
 };
 
 // What one keyframe saw, in world coordinates: the camera centre and the ends of its rays. A

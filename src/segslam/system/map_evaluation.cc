@@ -238,7 +238,8 @@ AlignedOccupancy referenceOccupancy(const io::TumDataset& dataset,
                                     const std::filesystem::path& run_dir) {
   const auto estimate = io::readTumTrajectory(run_dir / "CameraTrajectory.txt");
   const auto ate = eval::evaluateAte(*dataset.groundTruth(), estimate);
-  return {run_dir / "map" / kOccupancyFile, poseAlignment(*dataset.groundTruth(), estimate, ate)};
+  return {run_dir / "map" / occupancy::kOccupancyFile,
+          poseAlignment(*dataset.groundTruth(), estimate, ate)};
 }
 
 double share(std::size_t part, std::size_t whole) {
@@ -290,7 +291,7 @@ MapEvaluation evaluateMap(const io::TumDataset& dataset, const std::filesystem::
     evaluation.near_person_path_share = share(near, map_points.size());
   }
 
-  const auto occupancy_file = run_dir / "map" / kOccupancyFile;
+  const auto occupancy_file = run_dir / "map" / occupancy::kOccupancyFile;
   if (std::filesystem::exists(occupancy_file)) {
     std::optional<AlignedOccupancy> reference;
     if (options.occupancy_reference_run) {

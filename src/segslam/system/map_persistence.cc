@@ -98,7 +98,7 @@ std::optional<std::filesystem::path> linkedOccupancyMap(const LoadedMap& loaded,
                                                         const std::filesystem::path& file) {
   const std::string& folder = loaded.contents.identity.dense_map;
   if (folder.empty()) return std::nullopt;
-  const std::filesystem::path occupancy = std::filesystem::path(folder) / kOccupancyFile;
+  const std::filesystem::path occupancy = std::filesystem::path(folder) / occupancy::kOccupancyFile;
   if (!std::filesystem::exists(occupancy)) {
     spdlog::warn("{}: its map folder {} holds no occupancy map; this run's holds only what it sees",
                  file.string(), folder);

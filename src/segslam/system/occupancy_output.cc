@@ -1,8 +1,10 @@
 #include "segslam/system/occupancy_output.h"
 
 #include <chrono>
+#include <fstream>
 
 #include "segslam/dense/ply_io.h"
+#include "segslam/util/error.h"
 
 namespace segslam::system {
 
@@ -17,6 +19,26 @@ dense::LabelledCloud voxelCentres(const std::vector<Eigen::Vector3d>& voxels) {
   cloud.reserve(voxels.size());
   for (const auto& voxel : voxels) cloud.add(voxel.cast<float>(), {200, 200, 200});
   return cloud;
+}
+
+nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+// What the viewer needs besides the voxels and the grid's image: the grid's frame in the world.
+void writeInfo(const std::filesystem::path& file, const OccupancySummary& summary,
+               const occupancy::FloorGrid& grid) {
+  nlohmann::json info = toJson(summary);
+  info["grid"] = {{"image", occupancy::kFloorGridImage},
+                  {"rows", grid.cells.rows},
+                  {"cols", grid.cells.cols},
+                  {"resolution_m", grid.resolution_m},
+                  {"origin", {grid.origin.x(), grid.origin.y()}},
+                  {"u_axis", vectorJson(grid.u_axis)},
+                  {"v_axis", vectorJson(grid.v_axis)},
+                  {"up", vectorJson(grid.up)},
+                  {"floor_height_m", grid.floor_height_m}};
+  std::ofstream out(file);
+  out << info.dump(2) << "\n";
+  if (!out.flush()) util::failAt(file, "cannot write");
 }
 
 }  // namespace
@@ -40,12 +62,13 @@ OccupancySummary OccupancyOutput::write(const std::filesystem::path& folder,
   for (const auto& pose : keyframe_poses.poses()) rotations.push_back(pose.T_wc.linear());
   const auto grid =
       occupancy::projectOntoFloor(map_, occupancy::upFromCameras(rotations), options_.floor);
-  map_.write(folder / kOccupancyFile);
+  map_.write(folder / occupancy::kOccupancyFile);
   if (!grid.cells.empty()) {
-    occupancy::writeMapServerFiles(grid, folder / kFloorGridImage, folder / kFloorGridYaml);
+    occupancy::writeMapServerFiles(grid, folder / occupancy::kFloorGridImage,
+                                   folder / occupancy::kFloorGridYaml);
   }
   const auto occupied = map_.occupiedVoxels();
-  dense::writePly(folder / kOccupiedVoxelsFile, voxelCentres(occupied));
+  dense::writePly(folder / occupancy::kOccupiedVoxelsFile, voxelCentres(occupied));
   OccupancySummary summary;
   summary.resolution_m = map_.resolution();
   summary.occupied_voxels = occupied.size();
@@ -55,6 +78,7 @@ OccupancySummary OccupancyOutput::write(const std::filesystem::path& folder,
   summary.floor_height_m = grid.floor_height_m;
   summary.grid_rows = grid.cells.rows;
   summary.grid_cols = grid.cells.cols;
+  writeInfo(folder / occupancy::kOccupancyInfoFile, summary, grid);
   summary.seconds = seconds_ + secondsFrom(start);
   return summary;
 }

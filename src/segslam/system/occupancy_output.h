@@ -8,6 +8,7 @@
 #include "segslam/core/trajectory.h"
 #include "segslam/dense/labelled_cloud.h"
 #include "segslam/occupancy/floor_grid.h"
+#include "segslam/occupancy/map_files.h"
 #include "segslam/occupancy/occupancy_map.h"
 
 namespace segslam::system {
@@ -33,16 +34,10 @@ struct OccupancySummary {
   double seconds = 0.0;  // ray casting, projecting and writing
 };
 
-// The files of the occupancy map in a map folder.
-inline constexpr const char* kOccupancyFile = "occupancy.bt";
-inline constexpr const char* kFloorGridImage = "occupancy_2d.pgm";
-inline constexpr const char* kFloorGridYaml = "occupancy_2d.yaml";
-inline constexpr const char* kOccupiedVoxelsFile = "occupancy_occupied.ply";
-
 // Builds the occupancy map from the keyframes' points as dense::MapBuilder::build hands them over
 // (scan()), then writes it into a map folder (write()): occupancy.bt (OctoMap), the floor grid
-// as map_server reads it (occupancy_2d.pgm, occupancy_2d.yaml) and the occupied voxels' centres as
-// a PLY for the viewer (occupancy_occupied.ply).
+// as map_server reads it (occupancy_2d.pgm, occupancy_2d.yaml), and for the viewer the occupied
+// voxels' centres (occupancy_occupied.ply) and occupancy.json (counts, the grid's frame).
 class OccupancyOutput {
  public:
   explicit OccupancyOutput(const OccupancyOutputOptions& options);

@@ -51,6 +51,7 @@ void MapServer::addRoutes() {
   server_->set_file_extension_and_mimetype_mapping("js", "application/x-javascript");
   server_->set_file_extension_and_mimetype_mapping("ply", "application/octet-stream");
   server_->set_file_extension_and_mimetype_mapping("txt", "application/octet-stream");
+  server_->set_file_extension_and_mimetype_mapping("pgm", "image/x-portable-graymap");
   server_->Get("/api/run",
                [run_dir = options_.run_dir](const httplib::Request&, httplib::Response& response) {
                  answerRunDescription(run_dir, response);

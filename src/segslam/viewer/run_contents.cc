@@ -4,6 +4,7 @@
 
 #include <fstream>
 
+#include "segslam/occupancy/map_files.h"
 #include "segslam/util/error.h"
 
 namespace segslam::viewer {
@@ -93,10 +94,26 @@ nlohmann::json mapJson(const MapContents& map, const std::string& url_prefix) {
     entry["url"] = url_prefix + object.file.generic_string();
     objects.push_back(std::move(entry));
   }
+  nlohmann::json occupancy;
+  if (const auto& o = map.occupancy) {
+    occupancy = {{"info", url_prefix + o->info.generic_string()},
+                 {"voxels", url_prefix + o->occupied_voxels.generic_string()},
+                 {"grid", urlOrNull(o->floor_grid, url_prefix)}};
+  }
   return {{"static", urlOrNull(map.static_cloud, url_prefix)},
           {"dynamic", urlOrNull(map.dynamic_cloud, url_prefix)},
           {"voxel_size", map.voxel_size ? nlohmann::json(*map.voxel_size) : nlohmann::json()},
-          {"objects", std::move(objects)}};
+          {"objects", std::move(objects)},
+          {"occupancy", std::move(occupancy)}};
+}
+
+// The occupancy files, when the map folder has both the description and the voxels.
+std::optional<OccupancyContents> occupancyContents(const fs::path& run_dir) {
+  const auto info = existingFile(run_dir, fs::path("map") / occupancy::kOccupancyInfoFile);
+  const auto voxels = existingFile(run_dir, fs::path("map") / occupancy::kOccupiedVoxelsFile);
+  if (!info || !voxels) return std::nullopt;
+  return OccupancyContents{*info, *voxels,
+                           existingFile(run_dir, fs::path("map") / occupancy::kFloorGridImage)};
 }
 
 // map_sessions/session_<n>_points.ply with its keyframes beside it, by session.
@@ -139,6 +156,7 @@ RunContents describeRun(const fs::path& run_dir) {
     map.static_cloud = existingFile(run_dir, fs::path("map") / "static.ply");
     map.dynamic_cloud = existingFile(run_dir, fs::path("map") / "dynamic.ply");
     readObjectsIndex(run_dir, map);
+    map.occupancy = occupancyContents(run_dir);
     contents.map = std::move(map);
   }
   contents.sessions = sessionLayers(run_dir);

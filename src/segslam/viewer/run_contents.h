@@ -20,11 +20,19 @@ struct MapObject {
   nlohmann::json attributes;
 };
 
+// The occupancy map's files for the page (occupancy/map_files.h), when the run built one.
+struct OccupancyContents {
+  std::filesystem::path info;                       // map/occupancy.json
+  std::filesystem::path occupied_voxels;            // map/occupancy_occupied.ply
+  std::optional<std::filesystem::path> floor_grid;  // map/occupancy_2d.pgm
+};
+
 struct MapContents {
   std::optional<std::filesystem::path> static_cloud;   // map/static.ply
   std::optional<std::filesystem::path> dynamic_cloud;  // map/dynamic.ply
   std::optional<double> voxel_size;
   std::vector<MapObject> objects;
+  std::optional<OccupancyContents> occupancy;
 };
 
 // The map points and keyframe centres one session made (map_sessions/ of a run that saved its

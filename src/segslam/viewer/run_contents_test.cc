@@ -44,6 +44,22 @@ TEST(ViewerRunContents, MapFilesAndObjectsBecomeUrls) {
   EXPECT_EQ(json["map"]["objects"][0]["points"], 16);
 }
 
+TEST(ViewerRunContents, TheOccupancyMapIsALayerWhenTheRunBuiltOne) {
+  const ScopedTempDir dir;
+  fixtures::writeRunFolder(dir.path(), /*with_map=*/true);
+  EXPECT_TRUE(runContentsJson(describeRun(dir.path()), "/run/")["map"]["occupancy"].is_null());
+  std::ofstream(dir.path() / "map" / "occupancy.json") << "{}";
+  fixtures::writePly(dir.path() / "map" / "occupancy_occupied.ply",
+                     fixtures::grid(0.0f, 1.0f, 2, 9));
+  auto json = runContentsJson(describeRun(dir.path()), "/run/");
+  EXPECT_EQ(json["map"]["occupancy"]["info"], "/run/map/occupancy.json");
+  EXPECT_EQ(json["map"]["occupancy"]["voxels"], "/run/map/occupancy_occupied.ply");
+  EXPECT_TRUE(json["map"]["occupancy"]["grid"].is_null());
+  std::ofstream(dir.path() / "map" / "occupancy_2d.pgm") << "P5 1 1 255\n";
+  json = runContentsJson(describeRun(dir.path()), "/run/");
+  EXPECT_EQ(json["map"]["occupancy"]["grid"], "/run/map/occupancy_2d.pgm");
+}
+
 TEST(ViewerRunContents, EachSavedSessionIsALayer) {
   const ScopedTempDir dir;
   fixtures::writeRunFolder(dir.path(), /*with_map=*/false);
