@@ -17,7 +17,7 @@ struct EvalMapOptions : DatasetArguments {
   system::MapEvaluationOptions evaluation;
 };
 
-void printOccupancy(const system::OccupancyEvaluation& o) {
+void printOccupancyEvaluation(const system::OccupancyEvaluation& o) {
   fmt::print("  occupancy           {} occupied voxels of {:.2f} m in {}\n", o.occupied_voxels,
              o.resolution_m, o.file.string());
   if (o.on_people_share) {
@@ -53,7 +53,7 @@ void printEvaluation(const system::MapEvaluation& e, const system::MapEvaluation
         100.0 * *e.near_person_path_share, *e.near_person_path_points, o.person_radius,
         o.person_height);
   }
-  if (const auto& occupancy = e.occupancy) printOccupancy(*occupancy);
+  if (const auto& occupancy = e.occupancy) printOccupancyEvaluation(*occupancy);
 }
 
 void evalMapCommand(EvalMapOptions& options) {

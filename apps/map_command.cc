@@ -37,7 +37,7 @@ void mapCommand(MapOptions& options) {
       "{:.1f} s\n  outputs    {}\n",
       s.static_points, s.dynamic_points, s.objects, s.keyframes, s.build_seconds,
       std::filesystem::absolute(options.run_dir / "map").string());
-  if (s.occupancy) printOccupancy(*s.occupancy);
+  if (s.occupancy) printOccupancySummary(*s.occupancy);
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ void addOccupancyOptions(CLI::App& command, system::OccupancyOutputOptions& opti
       ->type_name("MIN,MAX");
 }
 
-void printOccupancy(const system::OccupancySummary& s) {
+void printOccupancySummary(const system::OccupancySummary& s) {
   fmt::print(
       "  occupancy  {} occupied and {} free voxels of {:.2f} m{}; floor grid {} x {} cells, "
       "floor {} ({:.1f} s)\n",

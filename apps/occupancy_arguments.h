@@ -11,6 +11,6 @@ namespace segslam::apps {
 void addOccupancyOptions(CLI::App& command, system::OccupancyOutputOptions& options);
 
 // The line `run` and `map` print about the occupancy map.
-void printOccupancy(const system::OccupancySummary& summary);
+void printOccupancySummary(const system::OccupancySummary& summary);
 
 }  // namespace segslam::apps

@@ -186,7 +186,7 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
         "({:.1f} s CPU for keyframe clouds, {:.1f} s to build)\n",
         s.map->static_points, s.map->dynamic_points, s.map->objects, s.map->keyframes,
         s.map->keyFrameSeconds(), s.map->build_seconds);
-    if (s.map->occupancy) printOccupancy(*s.map->occupancy);
+    if (s.map->occupancy) printOccupancySummary(*s.map->occupancy);
   }
   fmt::print("  outputs    {}\n", std::filesystem::absolute(options.out_dir).string());
 }

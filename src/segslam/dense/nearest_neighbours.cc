@@ -9,20 +9,22 @@
 namespace segslam::dense {
 
 struct NearestNeighbours::Index {
-  std::size_t size = 0;
+  // The tree searches the cloud's own coordinates (Open3D 0.16 does not copy them), so the cloud
+  // lives as long as the tree.
+  open3d::geometry::PointCloud cloud;
   open3d::geometry::KDTreeFlann tree;
 };
 
 NearestNeighbours::NearestNeighbours(const std::vector<Eigen::Vector3f>& points)
     : index_(std::make_unique<Index>()) {
-  index_->size = points.size();
-  if (!points.empty()) index_->tree.SetGeometry(toOpen3d(points));
+  index_->cloud = toOpen3d(points);
+  if (!points.empty()) index_->tree.SetGeometry(index_->cloud);
 }
 
 NearestNeighbours::~NearestNeighbours() = default;
 
 bool NearestNeighbours::anyWithin(const Eigen::Vector3f& query, double radius) const {
-  if (index_->size == 0) return false;
+  if (index_->cloud.points_.empty()) return false;
   std::vector<int> indices;
   std::vector<double> squared_distances;
   const Eigen::Vector3d q = query.cast<double>();

@@ -40,4 +40,8 @@ ErrorStatistics computeStatistics(std::span<const double> values) {
   return stats;
 }
 
+double share(std::size_t part, std::size_t whole) {
+  return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
+}
+
 }  // namespace segslam::eval

@@ -22,4 +22,7 @@ ErrorStatistics computeStatistics(std::span<const double> values);
 
 double median(std::span<const double> values);
 
+// part / whole, 0 for an empty whole (a share of nothing is reported as none, not NaN).
+double share(std::size_t part, std::size_t whole);
+
 }  // namespace segslam::eval

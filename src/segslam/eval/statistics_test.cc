@@ -37,5 +37,10 @@ TEST(Statistics, EmptyListIsAProgrammingError) {
   EXPECT_THROW(computeStatistics({}), std::invalid_argument);
 }
 
+TEST(Statistics, ShareOfNothingIsNone) {
+  EXPECT_DOUBLE_EQ(share(1, 4), 0.25);
+  EXPECT_DOUBLE_EQ(share(0, 0), 0.0);
+}
+
 }  // namespace
 }  // namespace segslam::eval

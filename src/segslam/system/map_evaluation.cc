@@ -18,6 +18,7 @@
 #include "segslam/dense/nearest_neighbours.h"
 #include "segslam/dense/ply_io.h"
 #include "segslam/eval/ate.h"
+#include "segslam/eval/statistics.h"
 #include "segslam/io/trajectory_io.h"
 #include "segslam/system/occupancy_output.h"
 #include "segslam/util/error.h"
@@ -242,10 +243,6 @@ AlignedOccupancy referenceOccupancy(const io::TumDataset& dataset,
           poseAlignment(*dataset.groundTruth(), estimate, ate)};
 }
 
-double share(std::size_t part, std::size_t whole) {
-  return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
-}
-
 }  // namespace
 
 MapEvaluation evaluateMap(const io::TumDataset& dataset, const std::filesystem::path& run_dir,
@@ -268,15 +265,15 @@ MapEvaluation evaluateMap(const io::TumDataset& dataset, const std::filesystem::
     truth_surfaces = compareWithFrames(dataset, map_points, options);
     const auto& truth = *truth_surfaces;
     evaluation.on_dynamic_points = truth.on_dynamic_points;
-    evaluation.on_dynamic_share = share(*evaluation.on_dynamic_points, map_points.size());
+    evaluation.on_dynamic_share = eval::share(*evaluation.on_dynamic_points, map_points.size());
     const dense::NearestNeighbours map_index(map_points);
     evaluation.surface_points = truth.static_surface.size();
     evaluation.completeness =
-        share(map_index.countWithin(truth.static_surface, options.surface_distance),
-              truth.static_surface.size());
+        eval::share(map_index.countWithin(truth.static_surface, options.surface_distance),
+                    truth.static_surface.size());
     const dense::NearestNeighbours surface_index(truth.static_surface);
-    evaluation.accuracy =
-        share(surface_index.countWithin(map_points, options.surface_distance), map_points.size());
+    evaluation.accuracy = eval::share(
+        surface_index.countWithin(map_points, options.surface_distance), map_points.size());
   }
 
   const auto persons_file = dataset.folder() / "persons_gt.txt";
@@ -288,7 +285,7 @@ MapEvaluation evaluateMap(const io::TumDataset& dataset, const std::filesystem::
       if (nearPersonPath(p.cast<double>(), tracks, up, options)) ++near;
     }
     evaluation.near_person_path_points = near;
-    evaluation.near_person_path_share = share(near, map_points.size());
+    evaluation.near_person_path_share = eval::share(near, map_points.size());
   }
 
   const auto occupancy_file = run_dir / "map" / occupancy::kOccupancyFile;

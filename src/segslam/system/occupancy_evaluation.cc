@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "segslam/dense/nearest_neighbours.h"
+#include "segslam/eval/statistics.h"
 #include "segslam/occupancy/occupancy_map.h"
 
 namespace segslam::system {
@@ -35,10 +36,6 @@ std::vector<Eigen::Vector3d> occupiedInTruth(const octomap::OcTree& tree,
   return centres;
 }
 
-double share(std::size_t part, std::size_t whole) {
-  return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
-}
-
 }  // namespace
 
 OccupancyEvaluation evaluateOccupancy(const AlignedOccupancy& map,
@@ -58,7 +55,7 @@ OccupancyEvaluation evaluateOccupancy(const AlignedOccupancy& map,
     const std::size_t on_people =
         index.countWithin(centres, 0.5 * std::sqrt(3.0) * evaluation.resolution_m);
     evaluation.on_people_voxels = on_people;
-    evaluation.on_people_share = share(on_people, occupied.size());
+    evaluation.on_people_share = eval::share(on_people, occupied.size());
   }
   if (reference) {
     const auto reference_tree = occupancy::readOctree(reference->file);
@@ -81,11 +78,11 @@ OccupancyEvaluation evaluateOccupancy(const AlignedOccupancy& map,
     }
     evaluation.reference = reference->file;
     evaluation.ghost_voxels = ghosts;
-    evaluation.ghost_share = share(ghosts, occupied.size());
+    evaluation.ghost_share = eval::share(ghosts, occupied.size());
     evaluation.ghost_beyond_a_voxel_voxels = ghosts_beyond_a_voxel;
-    evaluation.ghost_beyond_a_voxel_share = share(ghosts_beyond_a_voxel, occupied.size());
+    evaluation.ghost_beyond_a_voxel_share = eval::share(ghosts_beyond_a_voxel, occupied.size());
     evaluation.reference_occupied_voxels = reference_occupied.size();
-    evaluation.kept_share = share(kept, reference_occupied.size());
+    evaluation.kept_share = eval::share(kept, reference_occupied.size());
   }
   return evaluation;
 }

@@ -5,6 +5,7 @@
 
 #include "segslam/util/error.h"
 #include "segslam/viewer/run_contents.h"
+#include "segslam/viewer/served_file.h"
 
 namespace segslam::viewer {
 
@@ -46,6 +47,17 @@ void MapServer::addRoutes() {
   // httplib's mount points refuse paths that climb out of the folder ("..").
   server_->set_mount_point(kRunPrefix, options_.run_dir.string());
   server_->set_mount_point("/", options_.web_dir.string());
+  // The mount points follow links: one in the run folder to /etc/passwd would be served.
+  server_->set_pre_routing_handler(
+      [run_dir = options_.run_dir, web_dir = options_.web_dir](const httplib::Request& request,
+                                                               httplib::Response& response) {
+        const bool in_run = request.path.starts_with(kRunPrefix);
+        const ServedFolder served =
+            in_run ? ServedFolder{kRunPrefix, run_dir} : ServedFolder{"/", web_dir};
+        if (mayServe(served, request.path)) return httplib::Server::HandlerResponse::Unhandled;
+        response.status = 404;
+        return httplib::Server::HandlerResponse::Handled;
+      });
   // httplib compresses text/* and application/javascript bodies with Brotli at its slowest
   // setting, seconds for the 0.6 MB bundle; these types are valid for the page but not compressed.
   server_->set_file_extension_and_mimetype_mapping("js", "application/x-javascript");

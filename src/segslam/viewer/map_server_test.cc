@@ -94,6 +94,30 @@ TEST_F(ViewerMapServer, RefusesPathsOutsideTheServedFolders) {
   }
 }
 
+TEST_F(ViewerMapServer, RefusesLinksOutOfTheServedFolders) {
+  std::ofstream(dir_.path() / "secret.txt") << "secret";
+  std::filesystem::create_directories(dir_.path() / "outside");
+  std::ofstream(dir_.path() / "outside" / "index.html") << "secret";
+  const auto run = dir_.path() / "run";
+  std::filesystem::create_symlink(dir_.path() / "secret.txt", run / "escape.txt");
+  std::filesystem::create_symlink("/", run / "root");
+  std::filesystem::create_directory_symlink(dir_.path() / "outside", run / "outside");
+  std::filesystem::create_symlink(dir_.path() / "secret.txt", dir_.path() / "web" / "escape.js");
+  std::filesystem::create_symlink(run / "CameraTrajectory.txt", run / "inside.txt");
+  for (const char* path : {"/run/escape.txt", "/run/root/etc/passwd", "/run/outside/",
+                           "/run/outside/index.html", "/escape.js", "/run/root/"}) {
+    const auto response = client_->Get(path);
+    ASSERT_TRUE(response) << path;
+    EXPECT_EQ(response->status, 404) << path;
+    EXPECT_EQ(response->body.find("secret"), std::string::npos) << path;
+    EXPECT_EQ(response->body.find("root:"), std::string::npos) << path;
+  }
+  const auto inside = client_->Get("/run/inside.txt");
+  ASSERT_TRUE(inside);
+  EXPECT_EQ(inside->status, 200);
+  EXPECT_EQ(inside->body, segslam::testing::fileContents(run / "CameraTrajectory.txt"));
+}
+
 TEST(ViewerMapServerSetup, MissingRunFolderOrWebBuildIsAnError) {
   const ScopedTempDir dir;
   fixtures::writeRunFolder(dir.path() / "run", /*with_map=*/false);
