@@ -1,6 +1,7 @@
 #include "segslam/map/map_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -42,6 +43,16 @@ geometry::Pose getPose(util::ByteReader& in) {
     for (int c = 0; c < 4; ++c) pose.matrix()(r, c) = in.getF64();
   }
   return pose;
+}
+
+// Finite, with a proper orthonormal rotation: a file edited and re-summed would otherwise put
+// NaN or a shear into tracking.
+bool isRigidMotion(const geometry::Pose& pose) {
+  const Eigen::Matrix3d rotation = pose.linear();
+  return pose.matrix().allFinite() &&
+         ((rotation.transpose() * rotation) - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <
+             1e-6 &&
+         std::abs(rotation.determinant() - 1.0) < 1e-6;
 }
 
 void putVector(util::ByteWriter& out, const Eigen::Vector3d& v) {
@@ -150,6 +161,8 @@ SavedKeyFrame decodeKeyFrame(util::ByteReader& in, int pyramid_levels) {
   k.timestamp = in.getF64();
   k.session = in.getU32();
   k.T_cw = getPose(in);
+  if (!isRigidMotion(k.T_cw))
+    in.fail("keyframe " + std::to_string(k.id) + " has a pose that is not a rigid motion");
   k.parent = in.getU64();
   const std::size_t n = in.getCount(kKeypointBytes);
   k.keypoints.resize(n);
@@ -206,9 +219,16 @@ SavedMapPoint decodePoint(util::ByteReader& in) {
   p.session = in.getU32();
   p.position = getVector(in);
   p.normal = getVector(in);
+  if (!p.position.allFinite() || !p.normal.allFinite()) {
+    in.fail("point " + std::to_string(p.id) + " has a position or normal that is not finite");
+  }
   in.getBytes(p.descriptor.data(), p.descriptor.size());
   p.min_distance = in.getF64();
   p.max_distance = in.getF64();
+  if (!(p.min_distance >= 0.0 && p.min_distance <= p.max_distance &&
+        std::isfinite(p.max_distance))) {
+    in.fail("point " + std::to_string(p.id) + " has a viewing distance range that is not one");
+  }
   p.reference_keyframe = in.getU64();
   p.seen_through = in.getI32();
   p.moving_votes = in.getI32();

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "segslam/testing/test_support.h"
@@ -115,6 +116,25 @@ TEST(MapFile, AReferenceToAKeyFrameTheFileDoesNotHoldIsCorruption) {
   contents = twoKeyFrameMap();
   contents.points[0].observations[0].second = 3;  // the keyframe has 3 keypoints
   EXPECT_NE(errorOf(encodeMapFile(contents)).find("out of range"), std::string::npos);
+}
+
+TEST(MapFile, APoseOrPointThatIsNotGeometryIsCorruption) {
+  auto contents = twoKeyFrameMap();
+  contents.keyframes[1].T_cw.matrix()(0, 1) = 0.5;  // a shear
+  EXPECT_NE(
+      errorOf(encodeMapFile(contents)).find("keyframe 3 has a pose that is not a rigid motion"),
+      std::string::npos);
+  contents = twoKeyFrameMap();
+  contents.keyframes[0].T_cw.translation().x() = std::nan("");
+  EXPECT_NE(errorOf(encodeMapFile(contents)).find("not a rigid motion"), std::string::npos);
+  contents = twoKeyFrameMap();
+  contents.points[0].position.z() = INFINITY;
+  EXPECT_NE(errorOf(encodeMapFile(contents)).find("point 5 has a position or normal that is not"),
+            std::string::npos);
+  contents = twoKeyFrameMap();
+  contents.points[0].min_distance = 2.0;
+  contents.points[0].max_distance = 1.0;
+  EXPECT_NE(errorOf(encodeMapFile(contents)).find("viewing distance"), std::string::npos);
 }
 
 TEST(MapFile, WritesAndReadsFiles) {
