@@ -3,9 +3,10 @@
 
     occupancy_report.py RUNS.jsonl --commit C --markdown OUT.md --json OUT.json
 """
-import argparse
 import json
 import statistics
+
+from report_runs import parse_report_arguments
 
 
 def row(sequence, mode, runs):
@@ -32,13 +33,7 @@ def cell(values, pattern):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("runs")
-    parser.add_argument("--commit", required=True)
-    parser.add_argument("--markdown", required=True)
-    parser.add_argument("--json", required=True)
-    args = parser.parse_args()
-    runs = [json.loads(line) for line in open(args.runs) if line.strip()]
+    args, runs = parse_report_arguments(__doc__.split("\n")[0])
     rows = []
     for sequence in dict.fromkeys(r["sequence"] for r in runs):
         for mode in ("camera_rate", "deterministic"):

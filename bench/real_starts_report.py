@@ -3,19 +3,14 @@
 
     real_starts_report.py RUNS.jsonl --commit C --markdown OUT.md --json OUT.json
 """
-import argparse
 import json
 import statistics
 
+from report_runs import parse_report_arguments
+
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("runs")
-    parser.add_argument("--commit", required=True)
-    parser.add_argument("--markdown", required=True)
-    parser.add_argument("--json", required=True)
-    args = parser.parse_args()
-    runs = [json.loads(line) for line in open(args.runs) if line.strip()]
+    args, runs = parse_report_arguments(__doc__.split("\n")[0])
     cases = list(dict.fromkeys(r["case"] for r in runs))
     rows = []
     for case in cases:
