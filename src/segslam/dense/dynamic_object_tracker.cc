@@ -13,25 +13,28 @@ std::vector<std::size_t> DynamicObjectTracker::link(
     double timestamp, const std::vector<LabelSegment>& segments) const {
   const std::size_t none = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> track_of(segments.size(), none);
-  // Candidate links, nearest first: (distance, segment, track).
-  std::vector<std::tuple<float, std::size_t, std::size_t>> candidates;
+  // Candidate links, nearest relative to the track's reach first: (distance / reach, segment,
+  // track). A person back after a long absence is within reach of their old track, as is another
+  // person; the track seen a moment ago nearby is the likelier one.
+  std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
   for (std::size_t s = 0; s < segments.size(); ++s) {
-    if (segments[s].instance != 0) continue;
+    if (segments[s].instance != 0 || segments[s].indices.size() < options_.min_track_points) {
+      continue;
+    }
     for (std::size_t t = 0; t < tracks_.size(); ++t) {
       const DynamicTrack& track = tracks_[t];
       const double gap = timestamp - track.last_seen;
       if (track.instance != 0 || track.label != segments[s].label || gap > options_.max_gap) {
         continue;
       }
-      const float distance = (segments[s].centroid - track.last_centroid).norm();
-      if (distance <= options_.max_speed * gap + options_.slack) {
-        candidates.emplace_back(distance, s, t);
-      }
+      const double distance = (segments[s].centroid - track.last_centroid).norm();
+      const double reach = options_.max_speed * gap + options_.slack;
+      if (distance <= reach) candidates.emplace_back(distance / reach, s, t);
     }
   }
   std::sort(candidates.begin(), candidates.end());
   std::vector<bool> track_taken(tracks_.size(), false);
-  for (const auto& [distance, s, t] : candidates) {
+  for (const auto& [relative_distance, s, t] : candidates) {
     if (track_of[s] != none || track_taken[t]) continue;
     track_of[s] = t;
     track_taken[t] = true;
@@ -62,7 +65,10 @@ void DynamicObjectTracker::extend(std::size_t track, std::uint64_t keyframe_id, 
                                   const LabelledCloud& points, const LabelSegment& segment) {
   DynamicTrack& target = tracks_[track];
   // Segments come largest first: the first of a keyframe places the track.
+  if (target.keyframes.empty()) target.first_centroid = segment.centroid;
   if (target.keyframes.empty() || target.keyframes.back() != keyframe_id) {
+    target.travelled =
+        std::max(target.travelled, (segment.centroid - target.first_centroid).norm());
     target.keyframes.push_back(keyframe_id);
     target.keyframe_points += points.size();
     target.last_centroid = segment.centroid;
@@ -89,6 +95,9 @@ void DynamicObjectTracker::addKeyFrame(std::uint64_t keyframe_id, double timesta
       track_of[s] = static_cast<std::size_t>(same - tracks_.begin());
     } else if (track_of[s] >= tracks_.size()) {
       track_of[s] = nearbyTrack(segments, track_of, s);
+      if (track_of[s] >= tracks_.size() && segment.indices.size() < options_.min_track_points) {
+        continue;
+      }
     }
     if (track_of[s] >= tracks_.size()) {
       track_of[s] = tracks_.size();

@@ -14,11 +14,17 @@ struct DynamicTrackingOptions {
   // person whose arm is cut off by a mask's edge stays one segment.
   double cell_size = 0.05;
   // A segment continues a track of its label when its centroid lies within
-  // max_speed * (time since the track was last seen) + slack of the track's last centroid.
+  // max_speed * (time since the track was last seen) + slack of the track's last centroid; of
+  // the tracks in reach, the one it is nearest to relative to that reach.
   double max_speed = 2.0;  // m/s: a walking person
   double slack = 0.5;      // m: half a body, for a centroid that moves as the view changes
-  // A track not seen for longer ends; a person coming back later is a new object.
-  double max_gap = 5.0;  // s
+  // A track not seen for longer ends. Shorter absences are a person who left the view and came
+  // back: the same track when they could have walked there.
+  double max_gap = 60.0;  // s
+  // A segment of fewer points is a stray label (a network's false person on a cup) or a sliver
+  // at the image's border: it joins a tracked segment it touches, and neither starts a track nor
+  // places one. Strays linked as people dragged a seated person's track across the room.
+  std::size_t min_track_points = 300;
 };
 
 // One moving object across the keyframes that saw it.
@@ -28,8 +34,11 @@ struct DynamicTrack {
   std::vector<std::uint64_t> keyframes;
   LabelledCloud points;             // world frame, every keyframe's segment
   std::size_t keyframe_points = 0;  // dynamic points of the keyframes that saw it, all labels
+  Eigen::Vector3f first_centroid = Eigen::Vector3f::Zero();
   Eigen::Vector3f last_centroid = Eigen::Vector3f::Zero();
   double last_seen = 0.0;
+  // The farthest a keyframe saw it from where it was first seen (m).
+  float travelled = 0.0f;
 };
 
 // Follows the dynamic layer's objects over the keyframes, so that one walking person is one

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "segslam/dense/object_test_clouds.h"
 
@@ -52,7 +53,7 @@ TEST(DynamicObjectTracker, TwoPeopleApartAreTwoTracksEvenWhenSplitBySomething) {
   EXPECT_EQ(tracker.tracks()[1].keyframes.size(), 6u);
 }
 
-TEST(DynamicObjectTracker, InstanceIdsAreFollowedAndALongAbsenceStartsANewTrack) {
+TEST(DynamicObjectTracker, InstanceIdsAreFollowedAndOnlyAVeryLongAbsenceStartsANewTrack) {
   DynamicObjectTracker tracker({});
   LabelledCloud first;
   addPerson(first, 0.0f, 2.0f, 7);
@@ -62,9 +63,10 @@ TEST(DynamicObjectTracker, InstanceIdsAreFollowedAndALongAbsenceStartsANewTrack)
   addPerson(second, 2.0f, 2.0f, 7);  // far from where it was: the id still says who it is
   addPerson(second, 5.0f, 2.0f);
   track(tracker, 1, 0.2, second);
-  LabelledCloud much_later;
-  addPerson(much_later, 5.0f, 2.0f);
-  track(tracker, 2, 0.2 + 10.0, much_later);
+  LabelledCloud later;
+  addPerson(later, 5.0f, 2.0f);
+  track(tracker, 2, 0.2 + 10.0, later);          // back after 10 s: the same person
+  track(tracker, 3, 0.2 + 10.0 + 100.0, later);  // after 100 s: past max_gap, a new track
   const auto& tracks = tracker.tracks();
   ASSERT_EQ(tracks.size(), 3u);
   const auto seven = std::find_if(tracks.begin(), tracks.end(),
@@ -75,8 +77,33 @@ TEST(DynamicObjectTracker, InstanceIdsAreFollowedAndALongAbsenceStartsANewTrack)
     return t.instance == 0 && t.keyframes.front() == 0;
   });
   ASSERT_NE(untracked, tracks.end());
-  EXPECT_EQ(untracked->keyframes.size(), 2u);
-  EXPECT_EQ(tracks.back().keyframes, (std::vector<std::uint64_t>{2}));
+  EXPECT_EQ(untracked->keyframes, (std::vector<std::uint64_t>{0, 1, 2}));
+  EXPECT_EQ(tracks.back().keyframes, (std::vector<std::uint64_t>{3}));
+}
+
+// The held-out composite's case: a person seated still in the background the whole time, and one
+// walking through the view, out of it for seconds, and back somewhere else.
+TEST(DynamicObjectTracker, AWalkerWhoLeavesAndComesBackIsOneTrackBesideASeatedPerson) {
+  DynamicObjectTracker tracker({});
+  double time = 0.0;
+  std::uint64_t keyframe = 0;
+  const auto view = [&](std::optional<float> walker_x) {
+    LabelledCloud cloud;
+    addPerson(cloud, -1.0f, 4.0f);  // seated, still
+    if (walker_x) addPerson(cloud, *walker_x, 1.5f);
+    track(tracker, keyframe++, time, cloud);
+  };
+  for (int k = 0; k < 4; ++k, time += 0.5) view(0.5f * static_cast<float>(k));
+  time += 6.0;  // out of view for 6 s
+  view(std::nullopt);
+  time += 0.5;
+  for (int k = 0; k < 3; ++k, time += 0.5) view(3.0f - 0.5f * static_cast<float>(k));
+  const auto& tracks = tracker.tracks();
+  ASSERT_EQ(tracks.size(), 2u);
+  EXPECT_EQ(tracks[0].keyframes.size(), 8u);  // the seated person, seen in every keyframe
+  EXPECT_LT(tracks[0].travelled, 0.1f);
+  EXPECT_EQ(tracks[1].keyframes.size(), 7u);
+  EXPECT_NEAR(tracks[1].travelled, 3.0f, 0.05f);
 }
 
 }  // namespace

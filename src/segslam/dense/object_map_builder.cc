@@ -108,11 +108,15 @@ std::vector<MapObject> ObjectMapBuilder::dynamicObjects(double voxel_size) const
         options_.min_dynamic_share * static_cast<double>(track.keyframe_points)) {
       continue;
     }
+    const bool moved = track.travelled >= options_.min_travel;
+    const bool sat_still = track.label == static_cast<std::uint8_t>(core::SemanticClass::kPerson) &&
+                           static_cast<int>(track.keyframes.size()) >= options_.min_keyframes;
+    if (!moved && !sat_still) continue;
     MapObject object;
     object.points = voxelDownsample(track.points, voxel_size);
     if (object.points.size() < options_.min_points) continue;
     object.label = labelName(track.label);
-    object.dynamic = true;
+    object.dynamic = moved;
     object.confidence = 1.0;  // a track keeps one label
     object.keyframes = static_cast<int>(track.keyframes.size());
     computeExtent(object);

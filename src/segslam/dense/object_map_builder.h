@@ -31,6 +31,10 @@ struct ObjectMapOptions {
   // in the keyframes that saw it: the mask is made for the moving object, while a label that
   // covers a sliver of it where the mask spills over the edge of a monitor is not one.
   double min_dynamic_share = 0.15;
+  // A track is a moving object when it got this far from where it was first seen (m). One that
+  // did not is a person who sat still (an object, not a moving one, when seen in min_keyframes
+  // keyframes) or a mask that stayed on a static thing (no object: the static objects hold it).
+  double min_travel = 0.5;
   DynamicTrackingOptions dynamic;
 };
 
@@ -57,6 +61,7 @@ class ObjectMapBuilder {
  private:
   [[nodiscard]] int keyframesSeeing(const Eigen::Vector3f& point) const;
   [[nodiscard]] std::vector<MapObject> staticObjects(const LabelledCloud& static_map) const;
+  // The dynamic layer's tracks that are objects: the moving ones, and people who sat still.
   [[nodiscard]] std::vector<MapObject> dynamicObjects(double voxel_size) const;
 
   core::Camera camera_;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "segslam/dense/object_test_clouds.h"
 
 namespace segslam::dense {
@@ -91,6 +93,38 @@ TEST(ObjectMapBuilder, AWalkingPersonIsOneDynamicObject) {
   EXPECT_TRUE(objects[2].dynamic);
   EXPECT_EQ(objects[2].keyframes, 8);
   EXPECT_NEAR(objects[2].bbox_max.x() - objects[2].bbox_min.x(), 2.5f, 0.02f);
+}
+
+TEST(ObjectMapBuilder, APersonWhoSatStillIsAnObjectButNotAMovingOne) {
+  ObjectMapBuilder builder(core::Camera(), 5.0, {});
+  for (int k = 0; k < 6; ++k) {
+    LabelledCloud dynamic;
+    // Seated at the back; the view cuts a little more or less of them off.
+    const float top = -0.6f + 0.05f * static_cast<float>(k % 2);
+    addBox(dynamic, {1.0f, top, 3.5f}, {1.5f, 0.4f, 3.9f}, SemanticClass::kPerson);
+    builder.addKeyFrame(static_cast<std::uint64_t>(k), 0.5 * k, Eigen::Isometry3d::Identity(),
+                        desk(), dynamic);
+  }
+  const auto objects = builder.objects(voxelDownsample(desk(), 0.01), 0.01);
+  ASSERT_EQ(objects.size(), 3u);
+  const auto person = std::find_if(objects.begin(), objects.end(),
+                                   [](const MapObject& o) { return o.label == "person"; });
+  ASSERT_NE(person, objects.end());
+  EXPECT_FALSE(person->dynamic);
+  EXPECT_EQ(person->keyframes, 6);
+}
+
+TEST(ObjectMapBuilder, AMaskThatStaysOnAStaticThingIsNoDynamicObject) {
+  ObjectMapBuilder builder(core::Camera(), 5.0, {});
+  for (int k = 0; k < 4; ++k) {
+    LabelledCloud dynamic;
+    addBox(dynamic, {-0.2f, -0.1f, 2.2f}, {0.2f, 0.29f, 2.25f}, SemanticClass::kMonitor);
+    builder.addKeyFrame(static_cast<std::uint64_t>(k), 0.5 * k, Eigen::Isometry3d::Identity(),
+                        desk(), dynamic);
+  }
+  for (const auto& object : builder.objects(voxelDownsample(desk(), 0.01), 0.01)) {
+    EXPECT_FALSE(object.dynamic) << object.id;
+  }
 }
 
 }  // namespace
