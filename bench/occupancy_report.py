@@ -3,10 +3,9 @@
 
     occupancy_report.py RUNS.jsonl --commit C --markdown OUT.md --json OUT.json
 """
-import json
 import statistics
 
-from report_runs import parse_report_arguments
+from report_runs import parse_report_arguments, write_report
 
 
 def row(sequence, mode, runs):
@@ -63,10 +62,7 @@ def main():
             f"{cell(r['occupied_on_people_pct'], '%.2f')} | {cell(r['completeness_pct'], '%.1f')} | "
             f"{cell(r['points_on_people_pct'], '%.2f')} | {cell(r['occupancy_cost_pct'], '%.1f')} | "
             f"{cell(r['ate_m'], '%.4f')} |")
-    with open(args.markdown, "w") as markdown:
-        markdown.write("\n".join(lines) + "\n")
-    with open(args.json, "w") as out:
-        json.dump({"commit": args.commit, "rows": rows}, out, indent=2)
+    write_report(args, lines, {"rows": rows})
 
 
 if __name__ == "__main__":

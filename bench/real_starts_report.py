@@ -3,10 +3,9 @@
 
     real_starts_report.py RUNS.jsonl --commit C --markdown OUT.md --json OUT.json
 """
-import json
 import statistics
 
-from report_runs import parse_report_arguments
+from report_runs import parse_report_arguments, write_report
 
 
 def main():
@@ -57,10 +56,7 @@ def main():
     if every:
         lines += ["", f"All camera-rate runs: {len(every)}, median ATE "
                   f"{statistics.median(every):.4f} m, worst {max(every):.4f} m."]
-    with open(args.markdown, "w") as markdown:
-        markdown.write("\n".join(lines) + "\n")
-    with open(args.json, "w") as out:
-        json.dump({"commit": args.commit, "cases": rows}, out, indent=2)
+    write_report(args, lines, {"cases": rows})
 
 
 if __name__ == "__main__":

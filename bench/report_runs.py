@@ -17,3 +17,11 @@ def parse_report_arguments(description):
     with open(args.runs) as lines:
         runs = [json.loads(line) for line in lines if line.strip()]
     return args, runs
+
+
+def write_report(args, lines, results):
+    """The markdown table lines and the JSON results, with the commit they were measured at."""
+    with open(args.markdown, "w") as markdown:
+        markdown.write("\n".join(lines) + "\n")
+    with open(args.json, "w") as out:
+        json.dump({"commit": args.commit, **results}, out, indent=2)
