@@ -10,7 +10,6 @@
 #include "occupancy_arguments.h"
 #include "segslam/io/camera_config.h"
 #include "segslam/io/tum_dataset.h"
-#include "segslam/place/cnn_backbone_config.h"
 #include "segslam/place/vocabulary.h"
 #include "segslam/system/loop_detector_choice.h"
 #include "segslam/system/sequence_runner.h"
@@ -41,43 +40,17 @@ struct RunOptions : DatasetArguments {
   std::optional<std::filesystem::path> backbone_model;
 };
 
-// `auto` becomes cnn when the backbone is found, else bow (system::automaticLoopDetector).
-void chooseLoopDetector(RunOptions& options) {
-  if (!options.run.slam.loop_closing || options.loop_detector != "auto") return;
-  const auto automatic =
-      system::automaticLoopDetector(options.backbone_config, options.backbone_model);
-  spdlog::info("loop candidates: {} ({})", automatic.detector, automatic.reason);
-  options.loop_detector = automatic.detector;
-}
-
-void loadLoopBackbone(RunOptions& options) {
-  if (!options.run.slam.loop_closing || options.loop_detector != "cnn") return;
-  loop::CnnLoopBackbone backbone;
-  backbone.config = place::readCnnBackboneConfig(options.backbone_config);
-  backbone.config_file = options.backbone_config;
-  backbone.model_file = place::resolveBackboneModelFile(backbone.config, options.backbone_config,
-                                                        options.backbone_model);
-  options.run.slam.loop_backbone = std::move(backbone);
-}
-
-// The vocabulary serves relocalisation, and loop candidates with the bow detector. Only the
-// shipped one may be missing (a checkout without config/): relocalisation then tries the most
-// recent keyframes only, and the bow detector falls back to the descriptor vote. A vocabulary the
-// user names must load.
-void loadVocabulary(RunOptions& options) {
-  const bool bow_loops = options.run.slam.loop_closing && options.loop_detector == "bow";
-  if (options.vocabulary == defaultVocabularyFile() &&
-      !std::filesystem::exists(options.vocabulary)) {
-    spdlog::warn("no vocabulary at {}: relocalisation against the most recent keyframes only{}",
-                 options.vocabulary.string(),
-                 bow_loops ? ", loop candidates by descriptor vote" : "");
-    return;
-  }
-  const auto vocabulary =
-      std::make_shared<const place::Vocabulary>(place::Vocabulary::load(options.vocabulary));
-  options.run.slam.relocalisation_vocabulary = vocabulary;
-  options.run.map_file.vocabulary_file = options.vocabulary;
-  if (bow_loops) options.run.slam.loop_vocabulary = vocabulary;
+// The loop detector asked for ("auto" resolved), its vocabulary and backbone loaded.
+void configureLoopDetection(RunOptions& options) {
+  const system::LoopDetectionRequest request{options.run.slam.loop_closing,
+                                             options.loop_detector,
+                                             options.vocabulary,
+                                             defaultVocabularyFile(),
+                                             options.backbone_config,
+                                             options.backbone_model};
+  const auto detection = system::configureLoopDetection(request, options.run.slam);
+  options.run.map_file.place_recognition = detection.detector;
+  options.run.map_file.vocabulary_file = detection.vocabulary_file;
 }
 
 void printEvaluation(const system::SequenceRunSummary& s) {
@@ -195,11 +168,7 @@ void runCommand(RunOptions& options) {
   const auto dataset = openDataset(options).startingAt(options.start_frame);
   util::createOutputFolder(options.out_dir);  // before the networks load: fail early
   options.run.masks = maskSourceOptions(options.masks);
-  chooseLoopDetector(options);
-  options.run.map_file.place_recognition =
-      options.run.slam.loop_closing ? options.loop_detector : "none";
-  loadVocabulary(options);
-  loadLoopBackbone(options);
+  configureLoopDetection(options);
 
   util::addLogFile(options.out_dir / "run.log");
   io::writeCameraYaml(options.out_dir / "camera.yaml", dataset.camera());
@@ -253,7 +222,7 @@ void registerRunCommand(CLI::App& app) {
                   "Loop candidates: auto (cnn when the backbone is found, else bow), bow (bag "
                   "of words of the static area, needs the vocabulary), vote (descriptor vote, no "
                   "vocabulary) or cnn (CNN descriptor with the union mask, needs the backbone)")
-      ->check(CLI::IsMember({"auto", "bow", "vote", "cnn"}))
+      ->check(CLI::IsMember(system::loopDetectorNames()))
       ->capture_default_str();
   run->add_option("--backbone-config", options->backbone_config,
                   "CNN backbone description (YAML) of the cnn loop detector")

@@ -113,10 +113,26 @@ class Cloud:
     instances: npt.NDArray[np.uint16]
     def __len__(self) -> int: ...
 
+class MapObject:
+    id: str
+    label: str
+    instance: int
+    dynamic: bool
+    confidence: float
+    keyframes: int
+    points: Cloud
+    centroid: npt.NDArray[np.float32]
+    bbox_min: npt.NDArray[np.float32]
+    bbox_max: npt.NDArray[np.float32]
+    box_centre: npt.NDArray[np.float32]
+    box_extent: npt.NDArray[np.float32]
+    box_axes: npt.NDArray[np.float32]
+
 class DenseMap:
     voxel_size: float
     static_points: Cloud
     dynamic_points: Cloud
+    objects: List[MapObject]
 
 class TrackingState(enum.Enum):
     NOT_INITIALISED = 0
@@ -146,7 +162,8 @@ class System:
                  model_config: _Path = ..., model: Optional[_Path] = None,
                  vocabulary: Optional[_Path] = None, backbone_config: _Path = ...,
                  backbone_model: Optional[_Path] = None, network_interval: int = 5,
-                 network_latency: int = 0, camera_motion: str = "rigid") -> None: ...
+                 network_latency: int = 0, camera_motion: str = "rigid",
+                 load_map: Optional[_Path] = None, localize_only: bool = False) -> None: ...
     def track(self, timestamp: float, rgb: npt.NDArray[np.uint8],
               depth: Union[npt.NDArray[np.uint16], npt.NDArray[np.float32]],
               mask: Optional[npt.NDArray[Union[np.uint8, np.bool_]]] = None) -> TrackResult: ...
@@ -154,6 +171,8 @@ class System:
     def trajectory(self) -> Trajectory: ...
     def keyframes(self) -> Trajectory: ...
     def dense_map(self) -> DenseMap: ...
+    def objects(self) -> List[MapObject]: ...
+    def save_map(self, path: _Path) -> int: ...
     def __enter__(self) -> System: ...
     def __exit__(self, *args: object) -> None: ...
     @property
@@ -162,6 +181,10 @@ class System:
     def num_keyframes(self) -> int: ...
     @property
     def num_map_points(self) -> int: ...
+    @property
+    def loaded_points(self) -> int: ...
+    @property
+    def loaded_points_left(self) -> int: ...
     @property
     def camera(self) -> Camera: ...
     @property

@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 #include <spdlog/spdlog.h>
@@ -11,7 +12,6 @@
 #include "frame_arrays.h"
 #include "module_parts.h"
 #include "numpy_arrays.h"
-#include "segslam/place/cnn_backbone_config.h"
 #include "segslam/place/vocabulary.h"
 #include "segslam/system/loop_detector_choice.h"
 #include "segslam/system/streaming_slam.h"
@@ -39,6 +39,8 @@ struct SystemSettings {
   int network_interval = 0;
   int network_latency = 0;
   std::string camera_motion;
+  std::optional<std::filesystem::path> load_map;
+  bool localize_only = false;
 };
 
 void requireRange(int value, int low, int high, std::string_view name) {
@@ -67,41 +69,26 @@ system::MaskSourceOptions maskOptions(const SystemSettings& settings) {
   return options;
 }
 
-// As `segslam run --loop-detector`: "auto" is cnn when the backbone is found, else bow.
-std::string loopDetector(const SystemSettings& settings) {
-  const std::vector<std::string> known = {"auto", "bow", "vote", "cnn"};
-  if (std::find(known.begin(), known.end(), settings.loop_detector) == known.end()) {
-    throw py::value_error(fmt::format("unknown loop_detector '{}' (known: auto, bow, vote, cnn)",
-                                      settings.loop_detector));
+// As `segslam run --loop-detector` and --vocabulary (system::configureLoopDetection); the
+// resolved detector and vocabulary are the identity of a map this System saves.
+std::string configureLoopDetection(const SystemSettings& settings,
+                                   system::StreamingSlamOptions& options) {
+  const auto& names = system::loopDetectorNames();
+  if (std::find(names.begin(), names.end(), settings.loop_detector) == names.end()) {
+    throw py::value_error(fmt::format("unknown loop_detector '{}' (known: {})",
+                                      settings.loop_detector, fmt::join(names, ", ")));
   }
-  if (!settings.loop_closing) return "none";
-  if (settings.loop_detector != "auto") return settings.loop_detector;
-  return system::automaticLoopDetector(settings.backbone_config, settings.backbone_model).detector;
-}
-
-// The vocabulary serves relocalisation and the bow detector; only the shipped one may be missing,
-// as for the CLI (relocalisation then tries the most recent keyframes, bow falls back to vote).
-void loadVocabulary(const SystemSettings& settings, const std::string& detector,
-                    system::SlamOptions& slam) {
   const auto shipped = configDir() / place::kDefaultVocabularyFile;
-  const auto file = settings.vocabulary.value_or(shipped);
-  if (!settings.vocabulary && !std::filesystem::exists(file)) {
-    spdlog::warn("no vocabulary at {}: relocalisation against the most recent keyframes only",
-                 file.string());
-    return;
-  }
-  const auto vocabulary = std::make_shared<const place::Vocabulary>(place::Vocabulary::load(file));
-  slam.relocalisation_vocabulary = vocabulary;
-  if (detector == "bow") slam.loop_vocabulary = vocabulary;
-}
-
-void loadLoopBackbone(const SystemSettings& settings, system::SlamOptions& slam) {
-  loop::CnnLoopBackbone backbone;
-  backbone.config = place::readCnnBackboneConfig(settings.backbone_config);
-  backbone.config_file = settings.backbone_config;
-  backbone.model_file = place::resolveBackboneModelFile(backbone.config, settings.backbone_config,
-                                                        settings.backbone_model);
-  slam.loop_backbone = std::move(backbone);
+  const system::LoopDetectionRequest request{settings.loop_closing,
+                                             settings.loop_detector,
+                                             settings.vocabulary.value_or(shipped),
+                                             shipped,
+                                             settings.backbone_config,
+                                             settings.backbone_model};
+  const auto detection = system::configureLoopDetection(request, options.slam);
+  options.map_file.place_recognition = detection.detector;
+  options.map_file.vocabulary_file = detection.vocabulary_file;
+  return detection.detector;
 }
 
 // What one call of System.track gives back.
@@ -143,15 +130,15 @@ class System {
     system::StreamingSlamOptions options;
     options.masks = maskOptions(settings);
     mask_source_ = system::maskSourceName(options.masks.source);
-    loop_detector_ = loopDetector(settings);
     options.slam.deterministic = settings.deterministic;
     options.slam.loop_closing = settings.loop_closing;
     options.slam.orb.num_features = settings.features;
     options.slam.mask_dilation_px = settings.mask_dilation;
-    loadVocabulary(settings, loop_detector_, options.slam);
-    if (loop_detector_ == "cnn") loadLoopBackbone(settings, options.slam);
+    loop_detector_ = configureLoopDetection(settings, options);
     options.build_map = settings.build_map;
     options.seed = settings.seed;
+    options.map_file.load = settings.load_map;
+    options.map_file.localize_only = settings.localize_only;
     slam_ = std::make_unique<system::StreamingSlam>(camera, options);
   }
 
@@ -197,14 +184,31 @@ class System {
     return slam_->keyFrameTrajectory();
   }
 
+  // Built once: after finish() the map does not change.
   py::object denseMap() {
-    dense::DenseMap map;
     {
       const py::gil_scoped_release unlocked;
       const std::lock_guard lock(mutex_);
-      map = slam_->denseMap();
+      if (!dense_map_) dense_map_ = slam_->denseMap();
     }
-    return denseMapToNumpy(map);
+    return denseMapToNumpy(*dense_map_);
+  }
+
+  py::object objects() { return denseMap().attr("objects"); }
+
+  std::uintmax_t saveMap(const std::filesystem::path& file) {
+    const py::gil_scoped_release unlocked;
+    const std::lock_guard lock(mutex_);
+    return slam_->saveMap(file);
+  }
+
+  [[nodiscard]] std::size_t loadedPoints() const {
+    const auto& loaded = slam_->loadedMap();
+    return loaded ? loaded->contents.points.size() : 0;
+  }
+  [[nodiscard]] std::size_t loadedPointsLeft() {
+    const std::lock_guard lock(mutex_);
+    return slam_->loadedPointsLeft();
   }
 
   [[nodiscard]] bool finished() {
@@ -224,6 +228,7 @@ class System {
   std::mutex mutex_;
   std::optional<double> last_timestamp_;
   std::unique_ptr<system::StreamingSlam> slam_;
+  std::optional<dense::DenseMap> dense_map_;
 };
 
 std::unique_ptr<System> makeSystem(const core::Camera& camera, const std::string& seg,
@@ -236,12 +241,14 @@ std::unique_ptr<System> makeSystem(const core::Camera& camera, const std::string
                                    const std::filesystem::path& backbone_config,
                                    const std::optional<std::filesystem::path>& backbone_model,
                                    int network_interval, int network_latency,
-                                   const std::string& camera_motion) {
+                                   const std::string& camera_motion,
+                                   const std::optional<std::filesystem::path>& load_map,
+                                   bool localize_only) {
   const SystemSettings settings{
       seg,           loop_detector,   deterministic,  loop_closing,     features,
       mask_dilation, build_map,       seed,           model_config,     model,
       vocabulary,    backbone_config, backbone_model, network_interval, network_latency,
-      camera_motion};
+      camera_motion, load_map,        localize_only};
   const py::gil_scoped_release unlocked;  // networks and the vocabulary load
   return std::make_unique<System>(camera, settings);
 }
@@ -300,9 +307,12 @@ void bindSystem(py::module_& module) {
            py::arg("backbone_config") = defaultBackboneConfig(),
            py::arg("backbone_model") = py::none(), py::arg("network_interval") = 5,
            py::arg("network_latency") = 0, py::arg("camera_motion") = "rigid",
+           py::arg("load_map") = py::none(), py::arg("localize_only") = false,
            "Options as `segslam run`'s: seg is auto, none, oracle (the mask passed to track), "
            "semantic, geometric or fused; loop_detector auto, bow, vote or cnn; deterministic "
-           "runs local mapping, loop closing and the network inline (reproducible).")
+           "runs local mapping, loop closing and the network inline (reproducible); load_map "
+           "starts in a saved map (`segslam run --save-map` or save_map), whose dense map "
+           "carries on; localize_only tracks in it without changing it.")
       .def("track", &System::track, py::arg("timestamp"), py::arg("rgb"), py::arg("depth"),
            py::arg("mask") = py::none(),
            "Tracks one frame: rgb uint8 (H, W, 3); depth uint16 (raw, the camera's depth factor) "
@@ -314,12 +324,23 @@ void bindSystem(py::module_& module) {
            "Every tracked frame at its current (after finish(): final) pose.")
       .def("keyframes", &System::keyframes, "The keyframes' poses.")
       .def("dense_map", &System::denseMap,
-           "The dense map at the keyframes' final poses (finishes the run first).")
+           "The dense map at the keyframes' final poses, with its objects (finishes the run "
+           "first).")
+      .def("objects", &System::objects,
+           "The dense map's objects (segslam.MapObject list; finishes the run first).")
+      .def("save_map", &System::saveMap, py::arg("path"),
+           "Writes the SLAM map for `segslam run --load-map` or System(load_map=...) "
+           "(finishes the run first); returns the file's size in bytes.")
       .def("__enter__", [](System& system) -> System& { return system; })
       .def("__exit__", [](System& system, const py::args&) { system.finish(); })
       .def_property_readonly("finished", &System::finished)
       .def_property_readonly("num_keyframes", &System::numKeyFrames)
       .def_property_readonly("num_map_points", &System::numMapPoints)
+      .def_property_readonly("loaded_points", &System::loadedPoints,
+                             "Points of the loaded map (0 without one).")
+      .def_property_readonly("loaded_points_left", &System::loadedPointsLeft,
+                             "Loaded points still in the map (the others were seen through, "
+                             "on a moving object, or merged).")
       .def_property_readonly("camera", &System::camera)
       .def_property_readonly("mask_source", &System::maskSource,
                              "The masks in use ('auto' resolved).")

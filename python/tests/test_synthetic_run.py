@@ -1,6 +1,7 @@
 """A short synthetic sequence (rendered by `segslam synth`, so no data is needed) run through the
 CLI and through segslam.System frame by frame: the same deterministic trajectory."""
 
+import json
 import subprocess
 import threading
 
@@ -33,6 +34,33 @@ def test_deterministic_python_run_equals_the_cli_run(cli, synthetic_sequence, tm
     assert max_pose_difference(system.trajectory(), cli_trajectory) < 1e-7
     cli_keyframes = segslam.Trajectory.read_tum(run / "KeyFrameTrajectory.txt")
     assert max_pose_difference(system.keyframes(), cli_keyframes) < 1e-7
+
+
+def test_a_map_saved_by_python_is_the_clis_and_both_load_it(cli, synthetic_sequence, tmp_path):
+    """Python saves the map the CLI saves of the same run, byte for byte; Python localises in
+    it without changing it, and the CLI loads the map Python saved."""
+    options = ("--seg", "oracle", "--loop-detector", "vote", "--no-map")
+    run_cli(cli, synthetic_sequence, tmp_path / "cli", *options, "--save-map",
+            str(tmp_path / "cli.map"))
+    system = run_python(synthetic_sequence, seg="oracle", loop_detector="vote", build_map=False)
+    python_map = tmp_path / "python.map"
+    assert system.save_map(python_map) == python_map.stat().st_size
+    assert python_map.read_bytes() == (tmp_path / "cli.map").read_bytes()
+
+    again = run_python(synthetic_sequence, seg="oracle", loop_detector="vote", build_map=False,
+                       load_map=python_map, localize_only=True)
+    assert again.loaded_points > 100
+    assert again.loaded_points_left == again.loaded_points
+    assert len(again.trajectory()) > 0.9 * len(segslam.TumDataset(synthetic_sequence))
+    run = run_cli(cli, synthetic_sequence, tmp_path / "cli_loaded", *options, "--load-map",
+                  str(python_map), "--localize-only")
+    summary = json.loads((run / "summary.json").read_text())
+    assert summary["map_file"]["loaded_points"] == again.loaded_points
+    cli_trajectory = segslam.Trajectory.read_tum(run / "CameraTrajectory.txt")
+    assert max_pose_difference(again.trajectory(), cli_trajectory) < 1e-7
+    with pytest.raises(ValueError, match="absent.map"):
+        segslam.System(segslam.TumDataset(synthetic_sequence).camera, seg="none",
+                       loop_detector="vote", load_map=tmp_path / "absent.map")
 
 
 def test_dataset_frames_are_numpy_with_ground_truth(synthetic_sequence):

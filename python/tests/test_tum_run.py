@@ -55,3 +55,16 @@ def test_dense_map_comes_out_as_numpy(python_run):
     assert cloud.points.shape == (len(cloud), 3) and cloud.colours.dtype == np.uint8
     assert np.all(np.isfinite(cloud.points))
     assert dense_map.voxel_size > 0
+
+
+def test_objects_are_the_cli_runs(cli_run, python_run):
+    """The object list of the Python run is map/objects.json of the CLI's same run."""
+    cli_objects = json.loads((cli_run / "map" / "objects.json").read_text())["objects"]
+    objects = python_run.objects()
+    assert len(objects) > 0
+    assert [(o.id, o.label, o.dynamic, o.keyframes, len(o.points)) for o in objects] == [
+        (o["id"], o["label"], o["dynamic"], o["keyframes"], o["points"]) for o in cli_objects]
+    for obj, cli_obj in zip(objects, cli_objects):
+        np.testing.assert_allclose(obj.centroid, cli_obj["centroid"], atol=1e-5)
+        assert obj.points.points.shape == (cli_obj["points"], 3)
+        assert np.all(obj.bbox_min <= obj.centroid) and np.all(obj.centroid <= obj.bbox_max)

@@ -1,8 +1,13 @@
 #include "segslam/system/loop_detector_choice.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
 
 #include "segslam/place/cnn_backbone_config.h"
+#include "segslam/place/vocabulary.h"
 #include "segslam/util/error.h"
 
 namespace segslam::system {
@@ -20,6 +25,56 @@ AutomaticLoopDetector automaticLoopDetector(
   } catch (const util::Error& e) {
     return {"bow", e.what()};
   }
+}
+
+const std::vector<std::string>& loopDetectorNames() {
+  static const std::vector<std::string> names = {"auto", "bow", "vote", "cnn"};
+  return names;
+}
+
+namespace {
+
+std::string resolvedDetector(const LoopDetectionRequest& request) {
+  const auto& names = loopDetectorNames();
+  if (std::find(names.begin(), names.end(), request.detector) == names.end()) {
+    throw util::Error(fmt::format("unknown loop detector '{}' (known: {})", request.detector,
+                                  fmt::join(names, ", ")));
+  }
+  if (!request.loop_closing) return "none";
+  if (request.detector != "auto") return request.detector;
+  const auto automatic = automaticLoopDetector(request.backbone_config, request.backbone_model);
+  spdlog::info("loop candidates: {} ({})", automatic.detector, automatic.reason);
+  return automatic.detector;
+}
+
+loop::CnnLoopBackbone loadBackbone(const LoopDetectionRequest& request) {
+  loop::CnnLoopBackbone backbone;
+  backbone.config = place::readCnnBackboneConfig(request.backbone_config);
+  backbone.config_file = request.backbone_config;
+  backbone.model_file = place::resolveBackboneModelFile(backbone.config, request.backbone_config,
+                                                        request.backbone_model);
+  return backbone;
+}
+
+}  // namespace
+
+LoopDetection configureLoopDetection(const LoopDetectionRequest& request, SlamOptions& slam) {
+  LoopDetection detection{resolvedDetector(request), {}};
+  if (detection.detector == "cnn") slam.loop_backbone = loadBackbone(request);
+  const bool bow_loops = detection.detector == "bow";
+  if (request.vocabulary == request.shipped_vocabulary &&
+      !std::filesystem::exists(request.vocabulary)) {
+    spdlog::warn("no vocabulary at {}: relocalisation against the most recent keyframes only{}",
+                 request.vocabulary.string(),
+                 bow_loops ? ", loop candidates by descriptor vote" : "");
+    return detection;
+  }
+  const auto vocabulary =
+      std::make_shared<const place::Vocabulary>(place::Vocabulary::load(request.vocabulary));
+  slam.relocalisation_vocabulary = vocabulary;
+  detection.vocabulary_file = request.vocabulary;
+  if (bow_loops) slam.loop_vocabulary = vocabulary;
+  return detection;
 }
 
 }  // namespace segslam::system

@@ -3,6 +3,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "segslam/system/slam_system.h"
 
 namespace segslam::system {
 
@@ -20,5 +23,32 @@ struct AutomaticLoopDetector {
 AutomaticLoopDetector automaticLoopDetector(
     const std::filesystem::path& backbone_config,
     const std::optional<std::filesystem::path>& backbone_model);
+
+// The names a caller may ask for: auto, bow, vote, cnn.
+const std::vector<std::string>& loopDetectorNames();
+
+// What `segslam run` and the Python System are asked for: loop closing, its candidates, the
+// vocabulary (relocalisation, and the bow detector's words) and the CNN backbone.
+struct LoopDetectionRequest {
+  bool loop_closing = true;
+  std::string detector = "auto";  // one of loopDetectorNames()
+  std::filesystem::path vocabulary;
+  // The vocabulary shipped in config/, the only one that may be missing (a checkout without
+  // config/): relocalisation then tries the most recent keyframes only, and the bow detector
+  // falls back to the descriptor vote. A vocabulary the caller names must load.
+  std::filesystem::path shipped_vocabulary;
+  std::filesystem::path backbone_config;
+  std::optional<std::filesystem::path> backbone_model;
+};
+
+struct LoopDetection {
+  std::string detector;  // "auto" resolved; "none" without loop closing
+  std::filesystem::path vocabulary_file;  // the vocabulary loaded (empty: none)
+};
+
+// Resolves "auto" (automaticLoopDetector, logged), loads the vocabulary and, for the cnn
+// detector, the backbone into `slam`. Throws util::Error for an unknown detector, or a named
+// vocabulary or backbone that does not load.
+LoopDetection configureLoopDetection(const LoopDetectionRequest& request, SlamOptions& slam);
 
 }  // namespace segslam::system

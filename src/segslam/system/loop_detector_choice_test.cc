@@ -4,6 +4,7 @@
 
 #include <fstream>
 
+#include "segslam/place/vocabulary.h"
 #include "segslam/testing/test_support.h"
 #include "segslam/util/error.h"
 
@@ -53,6 +54,59 @@ TEST(AutomaticLoopDetector, ABrokenBackboneConfigIsAnError) {
   const auto config = dir.path() / "broken.yaml";
   std::ofstream(config) << "cnn_backbone: [unclosed\n";
   EXPECT_THROW(automaticLoopDetector(config, {}), util::Error);
+}
+
+LoopDetectionRequest requestFor(const std::string& detector, const std::filesystem::path& dir) {
+  LoopDetectionRequest request;
+  request.detector = detector;
+  request.shipped_vocabulary = dir / "shipped.vocabulary";
+  request.vocabulary = request.shipped_vocabulary;
+  request.backbone_config = backboneConfigNaming(dir, dir / "no.onnx");
+  return request;
+}
+
+// `segslam run` and the Python System both configure loops here: the shipped vocabulary may be
+// missing (no relocalisation vocabulary, bow falls back to the vote), a named one must load.
+TEST(LoopDetection, TheShippedVocabularyMayBeMissingANamedOneMustLoad) {
+  const testing::ScopedTempDir dir;
+  SlamOptions slam;
+  const auto detection = configureLoopDetection(requestFor("bow", dir.path()), slam);
+  EXPECT_EQ(detection.detector, "bow");
+  EXPECT_TRUE(detection.vocabulary_file.empty());
+  EXPECT_EQ(slam.relocalisation_vocabulary, nullptr);
+  EXPECT_EQ(slam.loop_vocabulary, nullptr);
+  auto named = requestFor("bow", dir.path());
+  named.vocabulary = dir.path() / "named.vocabulary";
+  EXPECT_THROW(configureLoopDetection(named, slam), util::Error);
+}
+
+TEST(LoopDetection, AutoIsResolvedAndNoLoopClosingIsNone) {
+  const testing::ScopedTempDir dir;
+  SlamOptions slam;
+  EXPECT_EQ(configureLoopDetection(requestFor("auto", dir.path()), slam).detector, "bow");
+  auto off = requestFor("cnn", dir.path());
+  off.loop_closing = false;
+  EXPECT_EQ(configureLoopDetection(off, slam).detector, "none");
+  EXPECT_FALSE(slam.loop_backbone.has_value());
+  EXPECT_THROW(configureLoopDetection(requestFor("psychic", dir.path()), slam), util::Error);
+}
+
+TEST(LoopDetection, TheShippedVocabularyServesRelocalisationAndBowLoops) {
+  const testing::ScopedTempDir dir;
+  auto request = requestFor("bow", dir.path());
+  request.shipped_vocabulary = std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config" /
+                               place::kDefaultVocabularyFile;
+  request.vocabulary = request.shipped_vocabulary;
+  SlamOptions slam;
+  const auto detection = configureLoopDetection(request, slam);
+  EXPECT_EQ(detection.vocabulary_file, request.shipped_vocabulary);
+  ASSERT_NE(slam.relocalisation_vocabulary, nullptr);
+  EXPECT_EQ(slam.loop_vocabulary, slam.relocalisation_vocabulary);
+  request.detector = "vote";
+  SlamOptions vote;
+  configureLoopDetection(request, vote);
+  EXPECT_NE(vote.relocalisation_vocabulary, nullptr);
+  EXPECT_EQ(vote.loop_vocabulary, nullptr);
 }
 
 }  // namespace

@@ -17,7 +17,6 @@
 #include "segslam/io/damaged_frames.h"
 #include "segslam/io/trajectory_io.h"
 #include "segslam/system/frame_player.h"
-#include "segslam/system/map_keyframe_feed.h"
 #include "segslam/system/map_session_layers.h"
 #include "segslam/util/elapsed_time.h"
 #include "segslam/util/error.h"
@@ -183,31 +182,17 @@ void checkLocalised(const MapFileOptions& options, std::size_t frame_index, std:
 }
 
 // Saves the map and, for the viewer, its layer per session into the run folder.
-void finishMapFile(const MapFileOptions& options, const SlamSystem& slam,
-                   const map::MapFileIdentity& identity, const LoadedMap* loaded,
+void finishMapFile(const MapFileOptions& options, SlamPipeline& pipeline,
                    const std::filesystem::path& out_dir, MapFileSummary& summary) {
   summary.localize_only = options.localize_only;
-  if (loaded) summary.loaded_points_culled = summary.loaded_points - slam.restoredPointsLeft();
+  if (pipeline.loadedMap()) {
+    summary.loaded_points_culled = summary.loaded_points - pipeline.slam().restoredPointsLeft();
+  }
   if (!options.save) return;
   summary.saved_file = *options.save;
-  summary.saved_bytes = saveMapOf(slam, *options.save, identity, loaded);
+  summary.saved_bytes = pipeline.saveMap(*options.save);
   spdlog::info("map saved to {} ({} bytes)", options.save->string(), summary.saved_bytes);
   writeSessionLayers(map::readMapFile(*options.save), out_dir / "map_sessions");
-}
-
-// Network outputs of frames already tracked: a keyframe's own mask goes to local mapping and the
-// dense map, another frame's to the map points it shows on a person.
-void applyLateOutputs(const std::vector<segmentation::LateOutput>& outputs, SlamSystem& slam,
-                      MapKeyFrameFeed* map_feed, SequenceRunSummary& summary) {
-  for (const auto& late : outputs) {
-    if (late.keyframe) {
-      slam.addKeyFrameMask(late.frame_id, late.dynamic);
-      if (map_feed) map_feed->addOwnMask(late);
-    } else {
-      summary.points_culled_by_late_masks +=
-          slam.applyLateMask(late.frame_id, late.dynamic, late.depth);
-    }
-  }
 }
 
 nlohmann::json mapFileJson(const MapFileSummary& m) {
@@ -237,6 +222,13 @@ OccupancyOutputOptions occupancyOptions(const SequenceRunOptions& options,
   return occupancy;
 }
 
+SlamPipelineOptions pipelineOptions(const SequenceRunOptions& options,
+                                    const std::filesystem::path& out_dir) {
+  SlamPipelineOptions pipeline = options;
+  pipeline.dense_map_folder = options.build_map ? out_dir / "map" : "";
+  return pipeline;
+}
+
 }  // namespace
 
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
@@ -254,33 +246,11 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     auto mask_options = options.masks;
     mask_options.carry_labels = options.build_map;  // only the object map reads labels
     FrameMaskSource masks(dataset, mask_options, options.slam.deterministic);
-    auto slam_options = options.slam;
-    if (masks.segmentsKeyFrames()) {
-      slam_options.mapper.own_mask_wait_frames = options.keyframe_mask_wait_frames;
-    }
-    slam_options.tracker.localize_only = options.map_file.localize_only;
-    if (options.map_file.localize_only) slam_options.loop_closing = false;
-    SlamSystem slam(dataset.camera(), slam_options);
-    const map::MapFileIdentity identity =
-        runIdentity(options.map_file, options.build_map ? out_dir / "map" : "");
-    std::optional<LoadedMap> loaded;
+    SlamPipeline pipeline(dataset.camera(), masks, pipelineOptions(options, out_dir));
+    const SlamSystem& slam = pipeline.slam();
     if (options.map_file.load || options.map_file.save) summary.map_file.emplace();
-    if (options.map_file.load) {
-      loaded = loadMapInto(slam, *options.map_file.load, identity);
+    if (const auto& loaded = pipeline.loadedMap()) {
       describeLoadedMap(*options.map_file.load, *loaded, slam, *summary.map_file);
-    }
-    std::optional<dense::MapBuilder> map_builder;
-    std::optional<MapKeyFrameFeed> map_feed;
-    if (options.build_map) {
-      auto map_options = options.map;
-      map_options.keyframe.mask_dilation_px = options.slam.mask_dilation_px;
-      map_builder.emplace(dataset.camera(), map_options);
-      map_feed.emplace(*map_builder, masks.segmentsKeyFrames());
-      if (loaded) {
-        if (auto earlier = linkedDenseMap(*loaded, *options.map_file.load)) {
-          map_builder->setEarlierMap(std::move(*earlier));
-        }
-      }
     }
     // Ground-truth masks feed oracle masks only; labels and instances only the object map.
     const io::FrameLayers layers{options.masks.source == MaskSource::kOracle, options.build_map,
@@ -294,37 +264,19 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
         damaged.skip(i, dataset.frames()[i].timestamp, *played.damage);
         continue;
       }
-      const io::RgbdFrame& frame = played.frame;
-      const FrameMasks& frame_masks = played.masks;
       if (options.realtime) realtime_lag_ms.push_back(played.lag_ms);
-      applyLateOutputs(frame_masks.late, slam, map_feed ? &*map_feed : nullptr, summary);
-      stats.push_back(
-          slam.processFrame(frame.timestamp, frame.rgb, frame.depth, frame_masks.dynamic));
-      stats.back().mask_ms = played.mask_ms;
-      stats.back().tracking_ms += played.mask_ms;
-      if (stats.back().keyframe) {
-        masks.segmentKeyFrame(frame, played.frame_id);
-        if (map_feed) {
-          map_feed->addKeyFrame(stats.back().frame_id, frame.timestamp,
-                                {frame.rgb, frame.depth, frame_masks.dynamic, frame_masks.labels,
-                                 frame_masks.instances});
-          map_builder->setLiveKeyFrames(slam.keyFrameTrajectory());
-        }
-      }
-      if (map_feed) map_feed->setTrackedFrame(stats.back().frame_id);
+      stats.push_back(pipeline.track(played.frame, played.masks, played.frame_id, played.mask_ms));
       if (on_frame) on_frame(stats.back());
       if (summary.map_file) {
         checkLocalised(options.map_file, i, summary.frames, stats.back(), *summary.map_file);
       }
     }
     summary.skipped_frames = damaged.count();
-    applyLateOutputs(masks.remainingLateOutputs(), slam, map_feed ? &*map_feed : nullptr, summary);
-    if (map_feed) map_feed->flush();
     summary.tracking_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - first_frame).count();
+    pipeline.finish();
     summary.network_runs = masks.networkRuns();
     summary.network_mean_ms = masks.meanNetworkMilliseconds();
-    slam.finish();
     summary.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto trajectory = slam.cameraTrajectory();
@@ -333,20 +285,18 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     io::writeTumTrajectory(out_dir / "KeyFrameTrajectory.txt", slam.keyFrameTrajectory(),
                            "segslam keyframe trajectory");
     summary.outputs = {out_dir / "CameraTrajectory.txt", out_dir / "KeyFrameTrajectory.txt"};
-    if (map_builder) {
+    if (dense::MapBuilder* map_builder = pipeline.mapBuilder()) {
       summary.map = buildAndWriteMap(*map_builder, slam.keyFrameTrajectory(), out_dir / "map",
-                                     occupancyOptions(options, loaded));
+                                     occupancyOptions(options, pipeline.loadedMap()));
       summary.outputs.push_back(out_dir / "map");
     }
-    if (summary.map_file) {
-      finishMapFile(options.map_file, slam, identity, loaded ? &*loaded : nullptr, out_dir,
-                    *summary.map_file);
-    }
+    if (summary.map_file) finishMapFile(options.map_file, pipeline, out_dir, *summary.map_file);
+    summary.points_culled_by_late_masks = pipeline.pointsCulledByLateMasks();
     summary.tracked_frames = trajectory.size();
     summary.keyframes = slam.numKeyFrames();
     summary.map_points = slam.numMapPoints();
     summary.bundle_adjustment_seconds = slam.bundleAdjustmentSeconds();
-    summary.loop_closing = slam_options.loop_closing;
+    summary.loop_closing = options.slam.loop_closing && !options.map_file.localize_only;
     summary.loops = slam.loopClosingStats();
     summary.own_masks = slam.ownMaskStats();
     checkLoops(dataset, summary);

@@ -8,26 +8,22 @@
 #include <string>
 #include <vector>
 
-#include "segslam/dense/map_builder.h"
 #include "segslam/eval/trajectory_evaluation.h"
 #include "segslam/io/tum_dataset.h"
 #include "segslam/system/map_output.h"
 #include "segslam/system/map_persistence.h"
 #include "segslam/system/mask_source.h"
 #include "segslam/system/occupancy_output.h"
-#include "segslam/system/slam_system.h"
+#include "segslam/system/slam_pipeline.h"
 
 namespace segslam::system {
 
-struct SequenceRunOptions {
-  SlamOptions slam;
+// The pipeline's options (SLAM, dense map, map files) and the run's.
+struct SequenceRunOptions : SlamPipelineOptions {
   MaskSourceOptions masks;
   std::size_t max_frames = std::numeric_limits<std::size_t>::max();
   eval::TrajectoryEvaluationOptions evaluation;
   std::uint64_t seed = 0;
-  // Dense map of the keyframes (map/ in the run folder); its mask dilation is the SLAM one.
-  bool build_map = true;
-  dense::MapBuilderOptions map;
   // The occupancy map built with the dense map (map/occupancy.bt, the floor grid); with
   // map_file.load it carries on the loaded session's.
   OccupancyOutputOptions occupancy;
@@ -35,11 +31,6 @@ struct SequenceRunOptions {
   // timestamps, from the first frame on) instead of as fast as they load: the timing a robot
   // sees, where the segmentation network has the frame interval to keep up.
   bool realtime = false;
-  // With a segmentation network, local mapping waits at most this many frames for each
-  // keyframe's own network output (SlamOptions::mapper.own_mask_wait_frames).
-  int keyframe_mask_wait_frames = 20;
-  // Loading and saving the SLAM map (segslam run --load-map, --save-map, --localize-only).
-  MapFileOptions map_file;
 };
 
 struct TimingSummary {
@@ -127,7 +118,8 @@ struct SequenceRunSummary {
 // lacks what the options need (e.g. oracle masks). With map_file.load the run starts in the saved
 // map (a bad or foreign file, or a camera not localised in it within
 // map_file.frames_to_localise frames, throws util::Error naming the file); with map_file.save
-// the final map is written there.
+// the final map is written there. The run's dense map folder (out_dir/map) replaces
+// options.dense_map_folder.
 SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunOptions& options,
                                const std::filesystem::path& out_dir,
                                const std::function<void(const FrameStats&)>& on_frame);

@@ -6,24 +6,15 @@
 #include "segslam/core/camera.h"
 #include "segslam/core/trajectory.h"
 #include "segslam/dense/dense_map.h"
-#include "segslam/dense/map_builder.h"
 #include "segslam/io/tum_dataset.h"
 #include "segslam/segmentation/busy_share.h"
-#include "segslam/system/map_keyframe_feed.h"
 #include "segslam/system/mask_source.h"
-#include "segslam/system/slam_system.h"
+#include "segslam/system/slam_pipeline.h"
 
 namespace segslam::system {
 
-struct StreamingSlamOptions {
-  SlamOptions slam;
+struct StreamingSlamOptions : SlamPipelineOptions {
   MaskSourceOptions masks;
-  // Dense map of the keyframes (denseMap()); its mask dilation is the SLAM one.
-  bool build_map = true;
-  dense::MapBuilderOptions map;
-  // With a segmentation network, local mapping waits at most this many frames for each
-  // keyframe's own network output (SlamOptions::mapper.own_mask_wait_frames).
-  int keyframe_mask_wait_frames = 20;
   // Seeds OpenCV's random generator of the constructing thread, as `segslam run --seed` does.
   std::uint64_t seed = 0;
 };
@@ -35,12 +26,12 @@ struct StreamedFrame {
 };
 
 // The pipeline of `segslam run` (runSequence) for frames the caller hands over one at a time,
-// from a live camera or another program: the same masks, SLAM, late and keyframe masks and dense
-// map, in the same order, so that a deterministic run of a dataset's frames gives runSequence's
-// trajectory exactly.
+// from a live camera or another program: the same masks and the same SlamPipeline, so that a
+// deterministic run of a dataset's frames gives runSequence's trajectory exactly.
 class StreamingSlam {
  public:
-  // Throws util::Error when the mask source cannot work (a missing or broken network).
+  // Throws util::Error when the mask source cannot work (a missing or broken network) or the
+  // map file to load cannot be loaded.
   StreamingSlam(const core::Camera& camera, const StreamingSlamOptions& options);
   StreamingSlam(const StreamingSlam&) = delete;
   StreamingSlam& operator=(const StreamingSlam&) = delete;
@@ -50,34 +41,44 @@ class StreamingSlam {
   // (CV_8UC1, non-zero = dynamic; empty = none), the only one with MaskSource::kOracle and added
   // to the source's otherwise. Timestamps must increase. Throws util::Error after finish().
   StreamedFrame track(const io::RgbdFrame& frame);
-  // Waits for local mapping, loop closing and the map's keyframes; tracking ends here.
-  void finish();
-  [[nodiscard]] bool finished() const { return finished_; }
+  // Waits for the network, local mapping, loop closing and the map's keyframes; tracking ends
+  // here.
+  void finish() { pipeline_.finish(); }
+  [[nodiscard]] bool finished() const { return pipeline_.finished(); }
+  // Writes the SLAM map for a later `segslam run --load-map` or StreamingSlam (finishes the run
+  // first); returns the file's size.
+  std::uintmax_t saveMap(const std::filesystem::path& file) { return pipeline_.saveMap(file); }
 
   // Every tracked frame at its final pose; call finish() first for the final poses.
-  [[nodiscard]] core::Trajectory cameraTrajectory() const { return slam_.cameraTrajectory(); }
-  [[nodiscard]] core::Trajectory keyFrameTrajectory() const { return slam_.keyFrameTrajectory(); }
-  [[nodiscard]] std::size_t numKeyFrames() const { return slam_.numKeyFrames(); }
-  [[nodiscard]] std::size_t numMapPoints() const { return slam_.numMapPoints(); }
-  [[nodiscard]] loop::LoopClosingStats loopClosingStats() const { return slam_.loopClosingStats(); }
+  [[nodiscard]] core::Trajectory cameraTrajectory() const { return slam().cameraTrajectory(); }
+  [[nodiscard]] core::Trajectory keyFrameTrajectory() const {
+    return slam().keyFrameTrajectory();
+  }
+  [[nodiscard]] std::size_t numKeyFrames() const { return slam().numKeyFrames(); }
+  [[nodiscard]] std::size_t numMapPoints() const { return slam().numMapPoints(); }
+  [[nodiscard]] loop::LoopClosingStats loopClosingStats() const {
+    return slam().loopClosingStats();
+  }
   [[nodiscard]] int networkRuns() const { return masks_.networkRuns(); }
+  // The loaded map's keyframes and points (none without one) and its points still in the map.
+  [[nodiscard]] const std::optional<LoadedMap>& loadedMap() const {
+    return pipeline_.loadedMap();
+  }
+  [[nodiscard]] std::size_t loadedPointsLeft() const { return slam().restoredPointsLeft(); }
 
   // The dense map at the keyframes' final poses (finishes the run first). Throws util::Error
   // when the options did not ask for a map.
   [[nodiscard]] dense::DenseMap denseMap();
 
  private:
+  [[nodiscard]] const SlamSystem& slam() const { return pipeline_.slam(); }
   [[nodiscard]] FrameMasks masksFor(const io::RgbdFrame& frame, std::uint64_t frame_id);
-  void handOverLateMasks(const FrameMasks& masks);
 
   MaskSource mask_source_;
   FrameMaskSource masks_;
-  SlamSystem slam_;
-  std::optional<dense::MapBuilder> map_builder_;
-  std::optional<MapKeyFrameFeed> map_feed_;
+  SlamPipeline pipeline_;
   segmentation::BusyShare tracking_load_;
   std::uint64_t next_frame_id_ = 0;
-  bool finished_ = false;
 };
 
 }  // namespace segslam::system

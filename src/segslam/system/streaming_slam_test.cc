@@ -108,5 +108,58 @@ TEST(StreamingSlam, DenseMapHoldsTheKeyFramesPoints) {
   EXPECT_EQ(map.static_points.colours.size(), map.static_points.size());
 }
 
+// The map a stream saves starts a later stream and a later `segslam run` alike: both localise in
+// it through the one pipeline and give the same trajectory, and localisation leaves it whole.
+TEST(StreamingSlam, SavedMapStartsAStreamAndARunAlike) {
+  const ScopedTempDir dir;
+  const auto dataset = syntheticDataset(dir);
+  const auto map_file = dir.path() / "session.map";
+  {
+    auto options = deterministicOptions(MaskSource::kOracle);
+    options.build_map = false;
+    StreamingSlam first(dataset.camera(), options);
+    streamDataset(dataset, first, true);
+    EXPECT_GT(first.saveMap(map_file), 0u);
+    EXPECT_TRUE(first.finished());
+  }
+  auto options = deterministicOptions(MaskSource::kOracle);
+  options.build_map = false;
+  options.map_file.load = map_file;
+  options.map_file.localize_only = true;
+  StreamingSlam second(dataset.camera(), options);
+  ASSERT_TRUE(second.loadedMap().has_value());
+  const std::size_t loaded_points = second.loadedMap()->contents.points.size();
+  EXPECT_GT(loaded_points, 100u);
+  const auto streamed = streamDataset(dataset, second, true);
+  EXPECT_EQ(second.loadedPointsLeft(), loaded_points);
+  EXPECT_GT(streamed.size(), dataset.size() * 9 / 10);
+
+  SequenceRunOptions run_options;
+  run_options.slam.deterministic = true;
+  run_options.masks.source = MaskSource::kOracle;
+  run_options.build_map = false;
+  run_options.map_file = options.map_file;
+  const auto run = runSequence(dataset, run_options, dir.path() / "run", {});
+  ASSERT_TRUE(run.evaluation.has_value());
+  const core::Trajectory& run_trajectory = run.evaluation->estimate;
+  ASSERT_EQ(run_trajectory.size(), streamed.size());
+  for (std::size_t i = 0; i < streamed.size(); ++i) {
+    EXPECT_TRUE(streamed[i].T_wc.isApprox(run_trajectory[i].T_wc, 1e-12)) << "pose " << i;
+  }
+}
+
+TEST(StreamingSlam, AMapThatIsNotThereIsAnErrorNamingIt) {
+  const ScopedTempDir dir;
+  const auto dataset = syntheticDataset(dir);
+  auto options = deterministicOptions(MaskSource::kNone);
+  options.map_file.load = dir.path() / "absent.map";
+  try {
+    StreamingSlam slam(dataset.camera(), options);
+    FAIL() << "an absent map was loaded";
+  } catch (const util::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("absent.map"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace segslam::system
