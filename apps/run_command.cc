@@ -42,12 +42,9 @@ struct RunOptions : DatasetArguments {
 
 // The loop detector asked for ("auto" resolved), its vocabulary and backbone loaded.
 void configureLoopDetection(RunOptions& options) {
-  const system::LoopDetectionRequest request{options.run.slam.loop_closing,
-                                             options.loop_detector,
-                                             options.vocabulary,
-                                             defaultVocabularyFile(),
-                                             options.backbone_config,
-                                             options.backbone_model};
+  const system::LoopDetectionRequest request{
+      options.run.slam.loop_closing, options.loop_detector,   options.vocabulary,
+      defaultVocabularyFile(),       options.backbone_config, options.backbone_model};
   const auto detection = system::configureLoopDetection(request, options.run.slam);
   options.run.map_file.place_recognition = detection.detector;
   options.run.map_file.vocabulary_file = detection.vocabulary_file;

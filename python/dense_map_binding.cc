@@ -65,9 +65,9 @@ Cloud toCloud(const dense::LabelledCloud& cloud) {
 }
 
 MapObject toMapObject(const dense::MapObject& object) {
-  return {object.id,         object.label,          object.instance,   object.dynamic,
-          object.confidence, object.keyframes,      toCloud(object.points), object.centroid,
-          object.bbox_min,   object.bbox_max,       object.box.centre, object.box.extent,
+  return {object.id,         object.label,     object.instance,        object.dynamic,
+          object.confidence, object.keyframes, toCloud(object.points), object.centroid,
+          object.bbox_min,   object.bbox_max,  object.box.centre,      object.box.extent,
           object.box.axes};
 }
 

@@ -231,19 +231,16 @@ class System {
   std::optional<dense::DenseMap> dense_map_;
 };
 
-std::unique_ptr<System> makeSystem(const core::Camera& camera, const std::string& seg,
-                                   const std::string& loop_detector, bool deterministic,
-                                   bool loop_closing, int features, int mask_dilation,
-                                   bool build_map, std::uint64_t seed,
-                                   const std::filesystem::path& model_config,
-                                   const std::optional<std::filesystem::path>& model,
-                                   const std::optional<std::filesystem::path>& vocabulary,
-                                   const std::filesystem::path& backbone_config,
-                                   const std::optional<std::filesystem::path>& backbone_model,
-                                   int network_interval, int network_latency,
-                                   const std::string& camera_motion,
-                                   const std::optional<std::filesystem::path>& load_map,
-                                   bool localize_only) {
+std::unique_ptr<System> makeSystem(
+    const core::Camera& camera, const std::string& seg, const std::string& loop_detector,
+    bool deterministic, bool loop_closing, int features, int mask_dilation, bool build_map,
+    std::uint64_t seed, const std::filesystem::path& model_config,
+    const std::optional<std::filesystem::path>& model,
+    const std::optional<std::filesystem::path>& vocabulary,
+    const std::filesystem::path& backbone_config,
+    const std::optional<std::filesystem::path>& backbone_model, int network_interval,
+    int network_latency, const std::string& camera_motion,
+    const std::optional<std::filesystem::path>& load_map, bool localize_only) {
   const SystemSettings settings{
       seg,           loop_detector,   deterministic,  loop_closing,     features,
       mask_dilation, build_map,       seed,           model_config,     model,

@@ -89,5 +89,20 @@ TEST(KeyFrame, AReleasedKeyFrameKeepsOnlyItsPlaceInThePoseTree) {
   EXPECT_TRUE(keyframes.middle->T_c_parent.translation().isApprox(Eigen::Vector3d(0.5, 0.0, 0.0)));
 }
 
+// A point made in this session goes when fewer than two keyframes see it; a point restored from a
+// map file stays while one does: losing a keyframe is no evidence that the point is gone.
+TEST(MapPoint, ARestoredPointStaysWhileOneKeyFrameSeesIt) {
+  const auto older = keyFrame(1);
+  const auto newer = keyFrame(2);
+  const auto points = share(*older, *newer, 0);
+  points[1]->restored = true;
+  newer->setBad();
+  EXPECT_TRUE(points[0]->bad);
+  EXPECT_FALSE(points[1]->bad);
+  EXPECT_EQ(points[1]->numObservations(), 1);
+  points[1]->eraseObservation(older.get());
+  EXPECT_TRUE(points[1]->bad);
+}
+
 }  // namespace
 }  // namespace segslam::map

@@ -27,8 +27,9 @@ void MapPoint::eraseObservation(KeyFrame* keyframe) {
   if (reference_keyframe == keyframe && !observations_.empty()) {
     reference_keyframe = observations_.begin()->first;
   }
-  // A point seen from fewer than two keyframes carries no multi-view constraint any more.
-  if (observations_.size() < 2) setBad();
+  // A point seen from fewer than two keyframes carries no multi-view constraint any more; a
+  // restored point was verified by its session and stays while a keyframe still holds it.
+  if (observations_.size() < (restored ? 1u : 2u)) setBad();
 }
 
 int MapPoint::numObservations() const { return static_cast<int>(observations_.size()); }

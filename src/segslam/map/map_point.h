@@ -58,6 +58,10 @@ class MapPoint {
   double max_distance = 0.0;
   KeyFrame* reference_keyframe;
   bool bad = false;
+  // Restored from a map file: an earlier session's point, which a later session culls only on
+  // evidence that it is gone (seen through, on a moving object), not for losing the keyframes
+  // that saw it, nor for being merged with a new point (the restored point survives the merge).
+  bool restored = false;
   std::shared_ptr<MapPoint> replaced_by;
   // Tracking bookkeeping: which frame last looked for / found this point.
   std::uint64_t last_seen_frame = UINT64_MAX;

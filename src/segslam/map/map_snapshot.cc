@@ -147,6 +147,7 @@ MapSessions restoreMap(const MapFileContents& contents,
     point->seen_through = saved.seen_through;
     point->moving_votes = saved.moving_votes;
     point->provisional = saved.provisional;
+    point->restored = true;
     for (const auto& [keyframe_id, index] : saved.observations) {
       KeyFrame* keyframe = keyframe_of.at(keyframe_id);
       point->addObservation(keyframe, index);

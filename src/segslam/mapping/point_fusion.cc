@@ -52,6 +52,13 @@ std::optional<std::size_t> bestKeypointFor(const map::KeyFrame& keyframe,
   return best;
 }
 
+// Of two points found to be one, the restored one survives (a loaded map keeps its points),
+// else the one seen from more keyframes.
+bool survivesMerge(const map::MapPoint& existing, const map::MapPoint& point) {
+  if (existing.restored != point.restored) return existing.restored;
+  return existing.numObservations() > point.numObservations();
+}
+
 }  // namespace
 
 int fuseIntoKeyFrame(map::KeyFrame& keyframe,
@@ -64,7 +71,9 @@ int fuseIntoKeyFrame(map::KeyFrame& keyframe,
     if (!index) continue;
     const auto existing = keyframe.mapPoints()[*index];
     if (existing && !existing->bad) {
-      if (existing->numObservations() > point->numObservations()) {
+      // Two restored points stay as their session left them: merging loses a loaded point.
+      if (existing->restored && point->restored) continue;
+      if (survivesMerge(*existing, *point)) {
         point->replaceWith(existing);
       } else {
         existing->replaceWith(point);

@@ -42,7 +42,7 @@ struct LoopDetectionRequest {
 };
 
 struct LoopDetection {
-  std::string detector;  // "auto" resolved; "none" without loop closing
+  std::string detector;                   // "auto" resolved; "none" without loop closing
   std::filesystem::path vocabulary_file;  // the vocabulary loaded (empty: none)
 };
 

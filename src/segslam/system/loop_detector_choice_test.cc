@@ -94,8 +94,8 @@ TEST(LoopDetection, AutoIsResolvedAndNoLoopClosingIsNone) {
 TEST(LoopDetection, TheShippedVocabularyServesRelocalisationAndBowLoops) {
   const testing::ScopedTempDir dir;
   auto request = requestFor("bow", dir.path());
-  request.shipped_vocabulary = std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config" /
-                               place::kDefaultVocabularyFile;
+  request.shipped_vocabulary =
+      std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config" / place::kDefaultVocabularyFile;
   request.vocabulary = request.shipped_vocabulary;
   SlamOptions slam;
   const auto detection = configureLoopDetection(request, slam);

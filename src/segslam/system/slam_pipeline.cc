@@ -20,9 +20,7 @@ SlamOptions slamOptions(const SlamPipelineOptions& options, const FrameMaskSourc
 
 SlamPipeline::SlamPipeline(const core::Camera& camera, FrameMaskSource& masks,
                            const SlamPipelineOptions& options)
-    : masks_(masks),
-      options_(options),
-      slam_(camera, slamOptions(options, masks)) {
+    : masks_(masks), options_(options), slam_(camera, slamOptions(options, masks)) {
   if (options.map_file.load) {
     loaded_ = loadMapInto(slam_, *options.map_file.load,
                           runIdentity(options.map_file, options.dense_map_folder));
@@ -48,8 +46,9 @@ FrameStats SlamPipeline::track(const io::RgbdFrame& frame, const FrameMasks& mas
   if (stats.keyframe) {
     masks_.segmentKeyFrame(frame, mask_frame_id);
     if (map_feed_) {
-      map_feed_->addKeyFrame(stats.frame_id, frame.timestamp,
-                             {frame.rgb, frame.depth, masks.dynamic, masks.labels, masks.instances});
+      map_feed_->addKeyFrame(
+          stats.frame_id, frame.timestamp,
+          {frame.rgb, frame.depth, masks.dynamic, masks.labels, masks.instances});
       map_builder_->setLiveKeyFrames(slam_.keyFrameTrajectory());
     }
   }

@@ -43,8 +43,8 @@ class SlamPipeline {
 
   // Tracks `frame` with the masks the mask source made for it as its frame `mask_frame_id`,
   // which took the calling thread `mask_ms` (counted in the stats' tracking time).
-  FrameStats track(const io::RgbdFrame& frame, const FrameMasks& masks,
-                   std::uint64_t mask_frame_id, double mask_ms);
+  FrameStats track(const io::RgbdFrame& frame, const FrameMasks& masks, std::uint64_t mask_frame_id,
+                   double mask_ms);
   // Network outputs still on their way, the dense map's keyframes, then local mapping and loop
   // closing: tracking ends here. Calls after the first do nothing.
   void finish();

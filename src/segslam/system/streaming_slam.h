@@ -51,9 +51,7 @@ class StreamingSlam {
 
   // Every tracked frame at its final pose; call finish() first for the final poses.
   [[nodiscard]] core::Trajectory cameraTrajectory() const { return slam().cameraTrajectory(); }
-  [[nodiscard]] core::Trajectory keyFrameTrajectory() const {
-    return slam().keyFrameTrajectory();
-  }
+  [[nodiscard]] core::Trajectory keyFrameTrajectory() const { return slam().keyFrameTrajectory(); }
   [[nodiscard]] std::size_t numKeyFrames() const { return slam().numKeyFrames(); }
   [[nodiscard]] std::size_t numMapPoints() const { return slam().numMapPoints(); }
   [[nodiscard]] loop::LoopClosingStats loopClosingStats() const {
@@ -61,9 +59,7 @@ class StreamingSlam {
   }
   [[nodiscard]] int networkRuns() const { return masks_.networkRuns(); }
   // The loaded map's keyframes and points (none without one) and its points still in the map.
-  [[nodiscard]] const std::optional<LoadedMap>& loadedMap() const {
-    return pipeline_.loadedMap();
-  }
+  [[nodiscard]] const std::optional<LoadedMap>& loadedMap() const { return pipeline_.loadedMap(); }
   [[nodiscard]] std::size_t loadedPointsLeft() const { return slam().restoredPointsLeft(); }
 
   // The dense map at the keyframes' final poses (finishes the run first). Throws util::Error
