@@ -28,7 +28,10 @@ std::vector<std::size_t> DynamicObjectTracker::link(
         continue;
       }
       const double distance = (segments[s].centroid - track.last_centroid).norm();
-      const double reach = options_.max_speed * gap + options_.slack;
+      const bool still = track.travelled <= options_.slack;
+      const double reach = still && segments[s].indices.size() < options_.min_reach_points
+                               ? options_.slack
+                               : options_.max_speed * gap + options_.slack;
       if (distance <= reach) candidates.emplace_back(distance / reach, s, t);
     }
   }

@@ -25,6 +25,10 @@ struct DynamicTrackingOptions {
   // at the image's border: it joins a tracked segment it touches, and neither starts a track nor
   // places one. Strays linked as people dragged a seated person's track across the room.
   std::size_t min_track_points = 300;
+  // A track that has not moved (travelled within slack) is continued by a segment of fewer points
+  // only within slack of where it was seen, not across the reach of its absence: a stray label or
+  // a walker's partial view far away made a seated person's track travel.
+  std::size_t min_reach_points = 1000;
 };
 
 // One moving object across the keyframes that saw it.

@@ -106,5 +106,30 @@ TEST(DynamicObjectTracker, AWalkerWhoLeavesAndComesBackIsOneTrackBesideASeatedPe
   EXPECT_NEAR(tracks[1].travelled, 3.0f, 0.05f);
 }
 
+// A person seen still and then out of view: a small person segment far away (a stray label, a
+// partial view of someone else) does not continue their track across the reach of the absence;
+// the person seen whole there does: they got up and walked.
+TEST(DynamicObjectTracker, ASmallSegmentFarAwayDoesNotMoveAStillTrack) {
+  DynamicObjectTracker tracker({});
+  LabelledCloud seated;
+  addPerson(seated, -1.0f, 4.0f);
+  for (int k = 0; k < 3; ++k) track(tracker, static_cast<std::uint64_t>(k), 0.5 * k, seated);
+  LabelledCloud stray;  // 2 m to the left of the seated person, 2.7 s after
+  addBox(stray, {-3.0f, -1.2f, 4.0f}, {-2.9f, -1.1f, 4.1f}, SemanticClass::kPerson);
+  ASSERT_GT(stray.size(), tracker.options().min_track_points);
+  ASSERT_LT(stray.size(), tracker.options().min_reach_points);
+  track(tracker, 3, 1.0 + 2.7, stray);
+  const auto& tracks = tracker.tracks();
+  ASSERT_EQ(tracks.size(), 2u);
+  EXPECT_EQ(tracks[0].keyframes.size(), 3u);
+  EXPECT_LT(tracks[0].travelled, 0.1f);
+  LabelledCloud stood;  // the seated person, whole, 2 m to the right a second later
+  addPerson(stood, 1.0f, 4.0f);
+  track(tracker, 4, 1.0 + 2.7 + 1.0, stood);
+  ASSERT_EQ(tracks.size(), 2u);
+  EXPECT_EQ(tracks[0].keyframes.size(), 4u);
+  EXPECT_GT(tracks[0].travelled, 1.9f);
+}
+
 }  // namespace
 }  // namespace segslam::dense
