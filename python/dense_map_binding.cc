@@ -101,6 +101,13 @@ std::vector<std::string> semanticClassNames() {
 
 }  // namespace
 
+py::object mapObjectsToNumpy(const std::vector<dense::MapObject>& objects) {
+  std::vector<MapObject> arrays;
+  arrays.reserve(objects.size());
+  for (const auto& object : objects) arrays.push_back(toMapObject(object));
+  return py::cast(std::move(arrays));
+}
+
 py::object denseMapToNumpy(const dense::DenseMap& map) {
   DenseMap arrays{map.voxel_size, toCloud(map.static_points), toCloud(map.dynamic_points), {}};
   for (const auto& object : map.objects) arrays.objects.push_back(toMapObject(object));

@@ -2,6 +2,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include <vector>
+
 #include "segslam/dense/dense_map.h"
 
 // Each part of the `segslam` module adds its classes and functions (segslam_module.cc calls them
@@ -21,5 +23,8 @@ void bindEvaluation(py::module_& module);
 
 // A segslam.DenseMap (bindDenseMap) holding copies of the map's clouds.
 py::object denseMapToNumpy(const dense::DenseMap& map);
+// The map's objects alone (a list of segslam.MapObject): without the copy of every map point
+// that denseMapToNumpy makes.
+py::object mapObjectsToNumpy(const std::vector<dense::MapObject>& objects);
 
 }  // namespace segslam::python

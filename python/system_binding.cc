@@ -184,17 +184,9 @@ class System {
     return slam_->keyFrameTrajectory();
   }
 
-  // Built once: after finish() the map does not change.
-  py::object denseMap() {
-    {
-      const py::gil_scoped_release unlocked;
-      const std::lock_guard lock(mutex_);
-      if (!dense_map_) dense_map_ = slam_->denseMap();
-    }
-    return denseMapToNumpy(*dense_map_);
-  }
+  py::object denseMap() { return denseMapToNumpy(finishedDenseMap()); }
 
-  py::object objects() { return denseMap().attr("objects"); }
+  py::object objects() { return mapObjectsToNumpy(finishedDenseMap().objects); }
 
   std::uintmax_t saveMap(const std::filesystem::path& file) {
     const py::gil_scoped_release unlocked;
@@ -229,6 +221,14 @@ class System {
   std::optional<double> last_timestamp_;
   std::unique_ptr<system::StreamingSlam> slam_;
   std::optional<dense::DenseMap> dense_map_;
+
+  // Built once: after finish() the map does not change.
+  const dense::DenseMap& finishedDenseMap() {
+    const py::gil_scoped_release unlocked;
+    const std::lock_guard lock(mutex_);
+    if (!dense_map_) dense_map_ = slam_->denseMap();
+    return *dense_map_;
+  }
 };
 
 std::unique_ptr<System> makeSystem(
