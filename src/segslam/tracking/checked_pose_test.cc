@@ -91,8 +91,22 @@ TEST(CheckedPose, WhenCheckedAndProvisionalMatchesAgreeThePoseIsThatOfAll) {
   EXPECT_EQ(result.inlier, all_together.inlier);
 }
 
+// A view mostly filled by people: two dozen checked matches still outvote 200 provisional ones on
+// a person who stepped aside.
+TEST(CheckedPose, AFewDozenCheckedMatchesOutvoteAPerson) {
+  const StepAsideScene scene(24, 20, 200);
+  std::mt19937 rng(3);
+  const geometry::Pose guess = optim::testing::perturbedPose(rng, scene.T_cw, 0.01, 0.005);
+  const auto all_together = optim::optimizePose(scene.intrinsics, guess, scene.matches);
+  ASSERT_GT(translationError(all_together.T_cw, scene.T_cw), 0.01);
+  const auto result =
+      optimizePoseTrustingCheckedMatches(scene.intrinsics, guess, scene.matches, scene.provisional);
+  EXPECT_LT(translationError(result.T_cw, scene.T_cw), 0.005);
+  EXPECT_LT(labels(scene, result).person_inliers, 10);
+}
+
 TEST(CheckedPose, TooFewCheckedMatchesLeaveThePoseToAllMatches) {
-  const StepAsideScene scene(20, 40, 100);
+  const StepAsideScene scene(CheckedPoseOptions{}.min_checked - 5, 40, 100);
   const auto all_together = optim::optimizePose(scene.intrinsics, scene.T_cw, scene.matches);
   const auto result = optimizePoseTrustingCheckedMatches(scene.intrinsics, scene.T_cw,
                                                          scene.matches, scene.provisional);
