@@ -9,8 +9,21 @@ namespace segslam::dense {
 
 DynamicObjectTracker::DynamicObjectTracker(DynamicTrackingOptions options) : options_(options) {}
 
+namespace {
+
+// Whether `segment` can be the person of a track who moved on: the track's last place was seen
+// empty since they were last seen there, or this keyframe shows that very segment there or behind
+// it. A person in front of the place may be someone else walking past the still one.
+bool placeLeftFor(const DynamicTrack& track, const PlaceSight& sight, std::size_t segment) {
+  return track.place_left ||
+         (sight.kind == PlaceSight::Kind::kSegment && sight.segment == segment && !sight.in_front);
+}
+
+}  // namespace
+
 std::vector<std::size_t> DynamicObjectTracker::link(
-    double timestamp, const std::vector<LabelSegment>& segments) const {
+    double timestamp, const std::vector<LabelSegment>& segments,
+    const std::vector<PlaceSight>& last_places) const {
   const std::size_t none = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> track_of(segments.size(), none);
   // Candidate links, nearest relative to the track's reach first: (distance / reach, segment,
@@ -28,10 +41,13 @@ std::vector<std::size_t> DynamicObjectTracker::link(
         continue;
       }
       const double distance = (segments[s].centroid - track.last_centroid).norm();
+      // A track not yet seen moving goes only as far as slack unless its person can have got up
+      // and walked: seen whole, and their place seen left.
       const bool still = track.travelled <= options_.slack;
-      const double reach = still && segments[s].indices.size() < options_.min_reach_points
-                               ? options_.slack
-                               : options_.max_speed * gap + options_.slack;
+      const bool may_walk = segments[s].indices.size() >= options_.min_reach_points &&
+                            placeLeftFor(track, last_places[t], s);
+      const double reach =
+          still && !may_walk ? options_.slack : options_.max_speed * gap + options_.slack;
       if (distance <= reach) candidates.emplace_back(distance / reach, s, t);
     }
   }
@@ -76,14 +92,24 @@ void DynamicObjectTracker::extend(std::size_t track, std::uint64_t keyframe_id, 
     target.keyframe_points += points.size();
     target.last_centroid = segment.centroid;
     target.last_seen = timestamp;
+    target.place_left = false;
   }
   target.points.append(points.select(segment.indices));
 }
 
 void DynamicObjectTracker::addKeyFrame(std::uint64_t keyframe_id, double timestamp,
                                        const LabelledCloud& points,
-                                       const std::vector<LabelSegment>& segments) {
-  std::vector<std::size_t> track_of = link(timestamp, segments);
+                                       const std::vector<LabelSegment>& segments,
+                                       const KeyFrameDepthView& view) {
+  std::vector<PlaceSight> last_places;
+  for (DynamicTrack& track : tracks_) {
+    last_places.push_back(view.look(track.last_centroid));
+    if (last_places.back().kind == PlaceSight::Kind::kEmpty) {
+      track.place_left = true;
+      track.left_a_place = true;
+    }
+  }
+  std::vector<std::size_t> track_of = link(timestamp, segments, last_places);
   std::vector<std::size_t> largest_first(segments.size());
   std::iota(largest_first.begin(), largest_first.end(), std::size_t{0});
   std::stable_sort(largest_first.begin(), largest_first.end(), [&](std::size_t a, std::size_t b) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "segslam/dense/keyframe_depth_view.h"
 #include "segslam/dense/label_segments.h"
 #include "segslam/dense/labelled_cloud.h"
 
@@ -25,9 +26,11 @@ struct DynamicTrackingOptions {
   // at the image's border: it joins a tracked segment it touches, and neither starts a track nor
   // places one. Strays linked as people dragged a seated person's track across the room.
   std::size_t min_track_points = 300;
-  // A track that has not moved (travelled within slack) is continued by a segment of fewer points
-  // only within slack of where it was seen, not across the reach of its absence: a stray label or
-  // a walker's partial view far away made a seated person's track travel.
+  // A track that has not moved (travelled within slack) is continued only within slack of where
+  // it was seen, not across the reach of its absence, unless by a segment of at least this many
+  // points in a keyframe that shows the track's place left (KeyFrameDepthView): a stray label, a
+  // walker's partial view far away, or a walker passing in front of a seated person made the
+  // seated person's track travel.
   std::size_t min_reach_points = 1000;
 };
 
@@ -43,6 +46,11 @@ struct DynamicTrack {
   double last_seen = 0.0;
   // The farthest a keyframe saw it from where it was first seen (m).
   float travelled = 0.0f;
+  // A keyframe since it was last seen showed the place where it was empty (KeyFrameDepthView).
+  bool place_left = false;
+  // A keyframe once showed a place where it was seen empty: it moved, however little its partial
+  // views' centroids did.
+  bool left_a_place = false;
 };
 
 // Follows the dynamic layer's objects over the keyframes, so that one walking person is one
@@ -56,9 +64,9 @@ class DynamicObjectTracker {
   explicit DynamicObjectTracker(DynamicTrackingOptions options);
 
   // Keyframes in time order; `segments` from segmentByLabel of `points` (world frame) with
-  // options().cell_size.
+  // options().cell_size; `view` the keyframe's view of both layers with these segments.
   void addKeyFrame(std::uint64_t keyframe_id, double timestamp, const LabelledCloud& points,
-                   const std::vector<LabelSegment>& segments);
+                   const std::vector<LabelSegment>& segments, const KeyFrameDepthView& view);
 
   [[nodiscard]] const std::vector<DynamicTrack>& tracks() const { return tracks_; }
   [[nodiscard]] const DynamicTrackingOptions& options() const { return options_; }
@@ -67,7 +75,8 @@ class DynamicObjectTracker {
   // Index of the track each untracked segment continues, one segment per track (none:
   // max size_t).
   [[nodiscard]] std::vector<std::size_t> link(double timestamp,
-                                              const std::vector<LabelSegment>& segments) const;
+                                              const std::vector<LabelSegment>& segments,
+                                              const std::vector<PlaceSight>& last_places) const;
   // The track of a segment of this keyframe (`track_of`, tracks_.size() and beyond = none yet)
   // whose bounds come within slack of `segment`'s; tracks_.size() when none does.
   [[nodiscard]] std::size_t nearbyTrack(const std::vector<LabelSegment>& segments,

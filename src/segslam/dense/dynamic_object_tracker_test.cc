@@ -18,10 +18,33 @@ void addPerson(LabelledCloud& cloud, float x, float z, std::uint16_t instance = 
   addBox(cloud, {x, -1.7f, z}, {x + 0.4f, 0.0f, z + 0.3f}, SemanticClass::kPerson, instance);
 }
 
+// The keyframes' camera: at the origin looking down +z, wide (f = 100 px) so that every person
+// of these tests is in view, with a wall 8 m ahead behind them all.
+core::Camera wideCamera() {
+  core::Camera camera;
+  camera.fx = camera.fy = 100.0;
+  return camera;
+}
+
+const LabelledCloud& backdrop() {
+  static const LabelledCloud wall = [] {
+    LabelledCloud cloud;
+    for (int i = -200; i <= 200; ++i) {
+      for (int j = -80; j <= 40; ++j) {
+        cloud.add({0.1f * static_cast<float>(i), 0.1f * static_cast<float>(j), 8.0f}, {9, 9, 9});
+      }
+    }
+    return cloud;
+  }();
+  return wall;
+}
+
 void track(DynamicObjectTracker& tracker, std::uint64_t keyframe, double time,
            const LabelledCloud& cloud) {
-  tracker.addKeyFrame(keyframe, time, cloud,
-                      segmentByLabel(cloud, tracker.options().cell_size, 50));
+  const auto segments = segmentByLabel(cloud, tracker.options().cell_size, 50);
+  tracker.addKeyFrame(
+      keyframe, time, cloud, segments,
+      KeyFrameDepthView(wideCamera(), Eigen::Isometry3d::Identity(), backdrop(), cloud, segments));
 }
 
 TEST(DynamicObjectTracker, OneWalkingPersonIsOneTrack) {
@@ -129,6 +152,30 @@ TEST(DynamicObjectTracker, ASmallSegmentFarAwayDoesNotMoveAStillTrack) {
   ASSERT_EQ(tracks.size(), 2u);
   EXPECT_EQ(tracks[0].keyframes.size(), 4u);
   EXPECT_GT(tracks[0].travelled, 1.9f);
+}
+
+// The held-out composites' case: a seated person seen in one keyframe; 1.4 s later a walker steps
+// in 2.5 m nearer the camera, in front of them, within the reach of a person who got up. The
+// walker hides the place, so nothing shows the seated person gone: the walker is someone else.
+TEST(DynamicObjectTracker, AWalkerInFrontOfASeatedPersonDoesNotTakeTheirTrack) {
+  DynamicObjectTracker tracker({});
+  LabelledCloud seated;
+  addPerson(seated, -1.0f, 4.0f);
+  track(tracker, 0, 0.0, seated);
+  LabelledCloud walker_in_front;
+  addPerson(walker_in_front, -0.5f, 1.5f);
+  ASSERT_GE(walker_in_front.size(), tracker.options().min_reach_points);
+  track(tracker, 1, 1.4, walker_in_front);
+  LabelledCloud both;  // the walker stepped aside; the seated person is seen again
+  addPerson(both, -1.0f, 4.0f);
+  addPerson(both, -0.1f, 1.5f);
+  track(tracker, 2, 1.8, both);
+  const auto& tracks = tracker.tracks();
+  ASSERT_EQ(tracks.size(), 2u);
+  EXPECT_EQ(tracks[0].keyframes, (std::vector<std::uint64_t>{0, 2}));
+  EXPECT_LT(tracks[0].travelled, 0.1f);
+  EXPECT_FALSE(tracks[0].left_a_place);
+  EXPECT_EQ(tracks[1].keyframes, (std::vector<std::uint64_t>{1, 2}));
 }
 
 }  // namespace

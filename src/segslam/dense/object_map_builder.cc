@@ -51,9 +51,11 @@ void ObjectMapBuilder::addKeyFrame(std::uint64_t id, double timestamp,
   T_cw_.push_back(T_wc.inverse());
   associator_.addKeyFrame(
       id, segmentByLabel(static_points, options_.cell_size, options_.min_segment_points));
+  const std::vector<LabelSegment> dynamic_segments =
+      segmentByLabel(dynamic_points, options_.dynamic.cell_size, options_.min_segment_points);
   tracker_.addKeyFrame(
-      id, timestamp, dynamic_points,
-      segmentByLabel(dynamic_points, options_.dynamic.cell_size, options_.min_segment_points));
+      id, timestamp, dynamic_points, dynamic_segments,
+      KeyFrameDepthView(camera_, T_cw_.back(), static_points, dynamic_points, dynamic_segments));
 }
 
 int ObjectMapBuilder::keyframesSeeing(const Eigen::Vector3f& point) const {
@@ -108,7 +110,9 @@ std::vector<MapObject> ObjectMapBuilder::dynamicObjects(double voxel_size) const
         options_.min_dynamic_share * static_cast<double>(track.keyframe_points)) {
       continue;
     }
-    const bool moved = track.travelled >= options_.min_travel;
+    // One keyframe's view shows neither that a person moved nor that they sat.
+    const bool moved = track.keyframes.size() >= 2 &&
+                       (track.travelled >= options_.min_travel || track.left_a_place);
     const bool sat_still = track.label == static_cast<std::uint8_t>(core::SemanticClass::kPerson) &&
                            static_cast<int>(track.keyframes.size()) >= options_.min_keyframes;
     if (!moved && !sat_still) continue;

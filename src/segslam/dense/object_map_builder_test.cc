@@ -114,6 +114,32 @@ TEST(ObjectMapBuilder, APersonWhoSatStillIsAnObjectButNotAMovingOne) {
   EXPECT_EQ(person->keyframes, 6);
 }
 
+// A walker near the camera seen in parts, or pacing, moves their centroid less than min_travel;
+// the wall seen where they were says that they moved.
+TEST(ObjectMapBuilder, APersonSeenGoneFromWhereTheyWereIsAMovingObject) {
+  LabelledCloud room = desk();
+  for (int i = -60; i <= 60; ++i) {
+    for (int j = -40; j <= 40; ++j) {
+      room.add({0.05f * static_cast<float>(i), 0.05f * static_cast<float>(j), 4.5f}, {9, 9, 9});
+    }
+  }
+  ObjectMapBuilder builder(core::Camera(), 5.0, {});
+  const float pacing[] = {1.0f, 1.4f, 1.0f};
+  for (int k = 0; k < 3; ++k) {
+    LabelledCloud person;
+    addBox(person, {pacing[k], -1.0f, 3.0f}, {pacing[k] + 0.4f, 0.7f, 3.3f},
+           SemanticClass::kPerson);
+    builder.addKeyFrame(static_cast<std::uint64_t>(k), 0.5 * k, Eigen::Isometry3d::Identity(), room,
+                        person);
+  }
+  const auto objects = builder.objects(voxelDownsample(desk(), 0.01), 0.01);
+  const auto person = std::find_if(objects.begin(), objects.end(),
+                                   [](const MapObject& o) { return o.label == "person"; });
+  ASSERT_NE(person, objects.end());
+  EXPECT_TRUE(person->dynamic);
+  EXPECT_EQ(person->keyframes, 3);
+}
+
 TEST(ObjectMapBuilder, AMaskThatStaysOnAStaticThingIsNoDynamicObject) {
   ObjectMapBuilder builder(core::Camera(), 5.0, {});
   for (int k = 0; k < 4; ++k) {
