@@ -83,7 +83,7 @@ std::size_t DynamicObjectTracker::nearbyTrack(const std::vector<LabelSegment>& s
 void DynamicObjectTracker::extend(std::size_t track, std::uint64_t keyframe_id, double timestamp,
                                   const LabelledCloud& points, const LabelSegment& segment) {
   DynamicTrack& target = tracks_[track];
-  // Segments come largest first: the first of a keyframe places the track.
+  // Linked segments come first: the first of a keyframe places the track.
   if (target.keyframes.empty()) target.first_centroid = segment.centroid;
   if (target.keyframes.empty() || target.keyframes.back() != keyframe_id) {
     target.travelled =
@@ -110,12 +110,18 @@ void DynamicObjectTracker::addKeyFrame(std::uint64_t keyframe_id, double timesta
     }
   }
   std::vector<std::size_t> track_of = link(timestamp, segments, last_places);
-  std::vector<std::size_t> largest_first(segments.size());
-  std::iota(largest_first.begin(), largest_first.end(), std::size_t{0});
-  std::stable_sort(largest_first.begin(), largest_first.end(), [&](std::size_t a, std::size_t b) {
+  // The linked segments first: each places its track, and a segment that only joins a track by
+  // touching its segment must not (a blob beside a seated person moved their track 0.9 m, and the
+  // person, seen again where they sat, was then taken by a walker's track). Then the largest.
+  std::vector<std::size_t> order(segments.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const bool a_linked = track_of[a] < tracks_.size();
+    const bool b_linked = track_of[b] < tracks_.size();
+    if (a_linked != b_linked) return a_linked;
     return segments[a].indices.size() > segments[b].indices.size();
   });
-  for (std::size_t s : largest_first) {
+  for (std::size_t s : order) {
     const LabelSegment& segment = segments[s];
     if (segment.instance != 0) {
       const auto same = std::find_if(tracks_.begin(), tracks_.end(), [&](const auto& t) {

@@ -178,5 +178,23 @@ TEST(DynamicObjectTracker, AWalkerInFrontOfASeatedPersonDoesNotTakeTheirTrack) {
   EXPECT_EQ(tracks[1].keyframes, (std::vector<std::uint64_t>{1, 2}));
 }
 
+// A larger person-labelled blob beside a seated person (their chair's back, a coat) joins their
+// track by touching them; the person, whom the track follows, places it.
+TEST(DynamicObjectTracker, ABlobJoiningASeatedPersonDoesNotMoveTheirTrack) {
+  DynamicObjectTracker tracker({});
+  LabelledCloud seated;
+  addPerson(seated, -1.0f, 4.0f);
+  track(tracker, 0, 0.0, seated);
+  track(tracker, 1, 0.5, seated);
+  LabelledCloud with_blob = seated;
+  addBox(with_blob, {-2.3f, -1.7f, 4.0f}, {-1.2f, 0.0f, 4.3f}, SemanticClass::kPerson);
+  track(tracker, 2, 1.0, with_blob);
+  track(tracker, 3, 1.5, seated);
+  const auto& tracks = tracker.tracks();
+  ASSERT_EQ(tracks.size(), 1u);
+  EXPECT_EQ(tracks[0].keyframes.size(), 4u);
+  EXPECT_LT(tracks[0].travelled, 0.1f);
+}
+
 }  // namespace
 }  // namespace segslam::dense
