@@ -60,7 +60,7 @@ eval::RpeResult rpe(const core::Trajectory& ground_truth, const core::Trajectory
   return eval::evaluateRpe(ground_truth, estimate, options);
 }
 
-std::string describe(const eval::ErrorStatistics& s) {
+std::string describeStatistics(const eval::ErrorStatistics& s) {
   return fmt::format(
       "ErrorStatistics(count={}, rmse={:.6g}, mean={:.6g}, median={:.6g}, "
       "std={:.6g}, min={:.6g}, max={:.6g})",
@@ -79,7 +79,7 @@ void bindEvaluation(py::module_& module) {
       .def_readonly("std", &eval::ErrorStatistics::std)
       .def_readonly("min", &eval::ErrorStatistics::min)
       .def_readonly("max", &eval::ErrorStatistics::max)
-      .def("__repr__", &describe);
+      .def("__repr__", &describeStatistics);
   py::class_<eval::AteResult>(module, "AteResult", "Absolute trajectory error.")
       .def_readonly("statistics", &eval::AteResult::statistics, "Metres.")
       .def_property_readonly("rmse", [](const eval::AteResult& r) { return r.statistics.rmse; })

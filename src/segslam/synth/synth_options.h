@@ -30,6 +30,8 @@ struct SynthOptions {
   // below 0.4 m, beyond 8 m and at depth discontinuities.
   std::string depth_noise = "none";
   std::uint32_t seed = 1;
+
+  bool operator==(const SynthOptions&) const = default;
 };
 
 inline constexpr double kSynthFps = 30.0;

@@ -12,6 +12,7 @@
 #include "segslam/io/trajectory_io.h"
 #include "segslam/io/tum_dataset.h"
 #include "segslam/synth/generator.h"
+#include "segslam/testing/synth_sequences.h"
 #include "segslam/testing/test_support.h"
 #include "segslam/util/error.h"
 
@@ -49,9 +50,8 @@ synth::SynthOptions syntheticSequence(int people) {
 
 TEST(SequenceRunner, StaticSyntheticSequenceIsTrackedToMillimetres) {
   const ScopedTempDir dir;
-  synth::generateSequence(syntheticSequence(0), dir.path() / "sequence");
-  const auto summary =
-      runDeterministic(dir.path() / "sequence", MaskSource::kNone, dir.path() / "run");
+  const auto summary = runDeterministic(testing::sharedSequence(syntheticSequence(0)),
+                                        MaskSource::kNone, dir.path() / "run");
   EXPECT_EQ(summary.frames, 90u);
   EXPECT_EQ(summary.tracked_frames, 90u);
   EXPECT_GE(summary.keyframes, 1u);
@@ -66,8 +66,7 @@ TEST(SequenceRunner, StaticSyntheticSequenceIsTrackedToMillimetres) {
 // (3.05 m): keyframes that made points only up to it left most of the view without any.
 TEST(SequenceRunner, KeyframesMapTheFarWallBeyondTheCloseDepth) {
   const ScopedTempDir dir;
-  synth::generateSequence(syntheticSequence(0), dir.path() / "sequence");
-  const auto dataset = io::TumDataset::open(dir.path() / "sequence");
+  const auto dataset = io::TumDataset::open(testing::sharedSequence(syntheticSequence(0)));
   SequenceRunOptions options;
   options.slam.deterministic = true;
   options.slam.loop_closing = false;

@@ -6,14 +6,11 @@
 #include <vector>
 
 #include "segslam/io/tum_dataset.h"
-#include "segslam/synth/generator.h"
 #include "segslam/testing/synth_sequences.h"
 #include "segslam/testing/test_support.h"
 
 namespace segslam::system {
 namespace {
-
-using testing::ScopedTempDir;
 
 struct KidnapResult {
   int lost_after_jump = 0;
@@ -56,9 +53,7 @@ KidnapResult playKidnappedLap(const io::TumDataset& lap, SlamOptions options,
 }
 
 TEST(SlamSystem, RelocalisesACameraCarriedToAPlaceSeenLongBefore) {
-  const ScopedTempDir dir;
-  synth::generateSequence(testing::noisyRoomLap(300), dir.path() / "lap");
-  const auto dataset = io::TumDataset::open(dir.path() / "lap");
+  const auto dataset = io::TumDataset::open(testing::sharedSequence(testing::noisyRoomLap(300)));
 
   SlamOptions with_vocabulary;
   with_vocabulary.relocalisation_vocabulary =
@@ -81,9 +76,7 @@ TEST(SlamSystem, RelocalisesACameraCarriedToAPlaceSeenLongBefore) {
 // (tracking::MotionLimitOptions): the frames stay lost, however well they match, until enough
 // time has passed for the camera to have been carried there.
 TEST(SlamSystem, DoesNotRelocaliseWhereTheCameraCannotHaveGone) {
-  const ScopedTempDir dir;
-  synth::generateSequence(testing::noisyRoomLap(300), dir.path() / "lap");
-  const auto dataset = io::TumDataset::open(dir.path() / "lap");
+  const auto dataset = io::TumDataset::open(testing::sharedSequence(testing::noisyRoomLap(300)));
   SlamOptions options;
   options.relocalisation_vocabulary =
       std::make_shared<const place::Vocabulary>(place::Vocabulary::load(

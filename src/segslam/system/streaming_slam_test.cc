@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "segslam/synth/generator.h"
 #include "segslam/system/sequence_runner.h"
+#include "segslam/testing/synth_sequences.h"
 #include "segslam/testing/test_support.h"
 #include "segslam/util/error.h"
 
@@ -12,14 +12,13 @@ namespace {
 
 using testing::ScopedTempDir;
 
-// A short synthetic sequence with one walking person, in `dir`/sequence.
-io::TumDataset syntheticDataset(const ScopedTempDir& dir) {
+// A short synthetic sequence with one walking person, rendered once for the suite.
+io::TumDataset syntheticDataset() {
   synth::SynthOptions options;
   options.frames = 40;
   options.people = 1;
   options.seed = 1;
-  synth::generateSequence(options, dir.path() / "sequence");
-  return io::TumDataset::open(dir.path() / "sequence");
+  return io::TumDataset::open(testing::sharedSequence(options));
 }
 
 StreamingSlamOptions deterministicOptions(MaskSource masks) {
@@ -55,7 +54,7 @@ core::Trajectory deterministicRun(const io::TumDataset& dataset, MaskSource mask
 
 TEST(StreamingSlam, DeterministicStreamOfADatasetIsItsDeterministicRun) {
   const ScopedTempDir dir;
-  const auto dataset = syntheticDataset(dir);
+  const auto dataset = syntheticDataset();
   for (const MaskSource masks : {MaskSource::kGeometric, MaskSource::kOracle}) {
     SCOPED_TRACE(maskSourceName(masks));
     const auto run = deterministicRun(dataset, masks, dir.path() / maskSourceName(masks));
@@ -71,8 +70,7 @@ TEST(StreamingSlam, DeterministicStreamOfADatasetIsItsDeterministicRun) {
 }
 
 TEST(StreamingSlam, CallersMaskIsAddedToTheSourcesAndNormalised) {
-  const ScopedTempDir dir;
-  const auto dataset = syntheticDataset(dir);
+  const auto dataset = syntheticDataset();
   auto options = deterministicOptions(MaskSource::kNone);
   options.build_map = false;
   StreamingSlam slam(dataset.camera(), options);
@@ -85,8 +83,7 @@ TEST(StreamingSlam, CallersMaskIsAddedToTheSourcesAndNormalised) {
 }
 
 TEST(StreamingSlam, NothingIsTrackedAfterFinishAndNoMapWithoutOne) {
-  const ScopedTempDir dir;
-  const auto dataset = syntheticDataset(dir);
+  const auto dataset = syntheticDataset();
   auto options = deterministicOptions(MaskSource::kNone);
   options.build_map = false;
   StreamingSlam slam(dataset.camera(), options);
@@ -99,8 +96,7 @@ TEST(StreamingSlam, NothingIsTrackedAfterFinishAndNoMapWithoutOne) {
 }
 
 TEST(StreamingSlam, DenseMapHoldsTheKeyFramesPoints) {
-  const ScopedTempDir dir;
-  const auto dataset = syntheticDataset(dir);
+  const auto dataset = syntheticDataset();
   StreamingSlam slam(dataset.camera(), deterministicOptions(MaskSource::kOracle));
   streamDataset(dataset, slam, true);
   const dense::DenseMap map = slam.denseMap();
@@ -112,7 +108,7 @@ TEST(StreamingSlam, DenseMapHoldsTheKeyFramesPoints) {
 // it through the one pipeline and give the same trajectory, and localisation leaves it whole.
 TEST(StreamingSlam, SavedMapStartsAStreamAndARunAlike) {
   const ScopedTempDir dir;
-  const auto dataset = syntheticDataset(dir);
+  const auto dataset = syntheticDataset();
   const auto map_file = dir.path() / "session.map";
   {
     auto options = deterministicOptions(MaskSource::kOracle);
@@ -150,7 +146,7 @@ TEST(StreamingSlam, SavedMapStartsAStreamAndARunAlike) {
 
 TEST(StreamingSlam, AMapThatIsNotThereIsAnErrorNamingIt) {
   const ScopedTempDir dir;
-  const auto dataset = syntheticDataset(dir);
+  const auto dataset = syntheticDataset();
   auto options = deterministicOptions(MaskSource::kNone);
   options.map_file.load = dir.path() / "absent.map";
   try {
