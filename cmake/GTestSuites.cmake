@@ -1,12 +1,14 @@
 # segslam_add_gtest_suites(TARGET [FIRST suite...] [ENVIRONMENT var=value...])
 #
-# Registers one CTest test per GoogleTest suite of TARGET (named after the suite, running
-# `TARGET --gtest_filter=Suite.*`), found after each build from `TARGET --gtest_list_tests`.
-# One process per suite rather than per test: starting the test binary costs 0.3 s (0.8 s under
-# ASan) and a suite's shared fixture (SetUpTestSuite) is built once, which together were a third
-# of the sanitizer run's time in CI. The suites listed after FIRST run whole sequences: CTest
-# starts them before the others, so that the last minutes of a parallel run are not one of them
-# running alone. Run a single test with `TARGET --gtest_filter=Suite.Test`.
+# Registers CTest tests for the GoogleTest suites of TARGET, found after each build from
+# `TARGET --gtest_list_tests`: each suite listed after FIRST alone (named after it, running
+# `TARGET --gtest_filter=Suite.*`), the others in batches of six suites, named after them
+# (`A+B+C+...`, so `ctest -R Suite` still finds a suite). Few processes rather than one per test
+# or per suite: starting the test binary costs 0.3 s (0.8 s under ASan; the dynamic loader
+# resolving Open3D's libraries), and a suite's shared fixture (SetUpTestSuite) is built once.
+# The FIRST suites run whole sequences (or the CLI on them): CTest starts them before the others, so that the last
+# minutes of a parallel run are not one of them running alone. Run a single test with
+# `TARGET --gtest_filter=Suite.Test`.
 set(SEGSLAM_GTEST_SUITES_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/gtest_suites_discovery.cmake)
 
 function(segslam_add_gtest_suites target)

@@ -11,21 +11,42 @@ if(NOT result EQUAL 0)
   message(FATAL_ERROR "${TEST_EXECUTABLE} --gtest_list_tests failed (${result}):\n${listing}")
 endif()
 
-string(REPLACE "\n" ";" lines "${listing}")
+# Suites after FIRST run alone and start first (COST); the others go in batches of
+# BATCH_SIZE suites, in listing order, one process per batch named after its suites
+# (`ctest -R Suite` still finds a suite's batch).
+set(BATCH_SIZE 6)
 set(script "")
+function(add_suites_test suites cost)
+  list(JOIN suites "+" name)
+  list(TRANSFORM suites APPEND ".*")
+  list(JOIN suites ":" filter)
+  string(APPEND script
+         "add_test([=[${name}]=] [==[${TEST_EXECUTABLE}]==] [=[--gtest_filter=${filter}]=])\n"
+         "set_tests_properties([=[${name}]=] PROPERTIES COST ${cost}"
+         " ENVIRONMENT [==[${ENVIRONMENT}]==])\n")
+  set(script "${script}" PARENT_SCOPE)
+endfunction()
+
+string(REPLACE "\n" ";" lines "${listing}")
+set(batch "")
 foreach(line IN LISTS lines)
   # Suite lines start in the first column and end with '.' (typed suites add "  # TypeParam").
   if(NOT line MATCHES "^([^ #][^ ]*)\\.( .*)?$")
     continue()
   endif()
   set(suite "${CMAKE_MATCH_1}")
-  set(cost 1)
   if(suite IN_LIST FIRST)
-    set(cost 1000)
+    add_suites_test("${suite}" 1000)
+    continue()
   endif()
-  string(APPEND script
-         "add_test([=[${suite}]=] [==[${TEST_EXECUTABLE}]==] [=[--gtest_filter=${suite}.*]=])\n"
-         "set_tests_properties([=[${suite}]=] PROPERTIES COST ${cost}"
-         " ENVIRONMENT [==[${ENVIRONMENT}]==])\n")
+  list(APPEND batch "${suite}")
+  list(LENGTH batch batch_length)
+  if(batch_length EQUAL BATCH_SIZE)
+    add_suites_test("${batch}" 1)
+    set(batch "")
+  endif()
 endforeach()
+if(batch)
+  add_suites_test("${batch}" 1)
+endif()
 file(WRITE ${SUITES_FILE} "${script}")
