@@ -3,115 +3,21 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <iostream>
 #include <random>
 #include <stdexcept>
 #include <vector>
 
-#include "segslam/optim/optim_test_scene.h"
+#include "segslam/optim/optim_test_problems.h"
 
 namespace segslam::optim {
 namespace {
 
+using testing::BaScene;
+using testing::BaSceneOptions;
+using testing::perturb;
 using testing::perturbedPose;
 using testing::rotationErrorDegrees;
 using testing::translationError;
-
-struct SceneOptions {
-  int num_keyframes = 6;
-  int num_points = 300;
-  int covisibility_window = 3;  // a point is seen from keyframes within this many of its home
-  double depth_share = 0.8;     // share of observations with depth
-  // Share of the points seen at least 3 times whose observation in one keyframe is replaced by
-  // a random pixel: a mismatch, as feature matching makes them.
-  double mismatched_point_share = 0.0;
-};
-
-// Ground truth plus a problem that observes it with noise; keyframe 0 is fixed.
-struct BaScene {
-  std::vector<geometry::Pose> true_poses;
-  std::vector<Eigen::Vector3d> true_points;
-  std::vector<bool> is_outlier;  // per observation
-  BundleAdjustmentProblem problem;
-};
-
-// Keyframes on an arc of radius 3 m, 8 degrees apart, all looking at its centre (0, 0, 3).
-std::vector<geometry::Pose> keyframeArc(int num_keyframes) {
-  constexpr double kRadius = 3.0;
-  constexpr double kStep = 8.0 * M_PI / 180.0;
-  const Eigen::Vector3d centre(0.0, 0.0, kRadius);
-  std::vector<geometry::Pose> poses;
-  for (int i = 0; i < num_keyframes; ++i) {
-    const double angle = kStep * (i - 0.5 * (num_keyframes - 1));
-    geometry::Pose T_wc = geometry::Pose::Identity();
-    T_wc.linear() = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitY()).toRotationMatrix();
-    T_wc.translation() = centre - kRadius * T_wc.linear().col(2);
-    poses.push_back(T_wc.inverse());
-  }
-  return poses;
-}
-
-bool isVisible(const StereoIntrinsics& k, const geometry::Pose& T_cw, const Eigen::Vector3d& p_w) {
-  const Eigen::Vector3d p_c = T_cw * p_w;
-  return isInFront(p_c) && testing::isInImage(predictMeasurement(k, p_c).head<2>());
-}
-
-// Adds a point seen from a random keyframe and the noisy observations of it from the
-// keyframes around that one that see it.
-void addPoint(std::mt19937& rng, const SceneOptions& options, BaScene& scene) {
-  const StereoIntrinsics& k = scene.problem.intrinsics;
-  const int home = std::uniform_int_distribution<int>(0, options.num_keyframes - 1)(rng);
-  const Eigen::Vector3d p_w = testing::randomVisiblePoint(rng, k, scene.true_poses[home], 0.8, 6.0);
-  const std::size_t point = scene.true_points.size();
-  scene.true_points.push_back(p_w);
-  std::bernoulli_distribution with_depth(options.depth_share);
-  const std::size_t first_observation = scene.problem.observations.size();
-  const int first = std::max(0, home - options.covisibility_window);
-  const int last = std::min(options.num_keyframes - 1, home + options.covisibility_window);
-  for (int j = first; j <= last; ++j) {
-    const geometry::Pose& T_cw = scene.true_poses[j];
-    if (!isVisible(k, T_cw, p_w)) continue;
-    scene.problem.observations.push_back(
-        {static_cast<std::size_t>(j), point,
-         testing::noisyObservation(rng, k, T_cw, p_w, with_depth(rng))});
-    scene.is_outlier.push_back(false);
-  }
-  const std::size_t num_observations = scene.problem.observations.size() - first_observation;
-  if (num_observations >= 3 && std::bernoulli_distribution(options.mismatched_point_share)(rng)) {
-    const std::size_t mismatched = first_observation + std::uniform_int_distribution<std::size_t>(
-                                                           0, num_observations - 1)(rng);
-    RgbdObservation& observation = scene.problem.observations[mismatched].observation;
-    observation = testing::randomObservation(rng, k, observation.hasDepth());
-    scene.is_outlier[mismatched] = true;
-  }
-}
-
-BaScene makeScene(std::mt19937& rng, const SceneOptions& options) {
-  BaScene scene;
-  scene.true_poses = keyframeArc(options.num_keyframes);
-  for (int i = 0; i < options.num_points; ++i) addPoint(rng, options, scene);
-  for (std::size_t i = 0; i < scene.true_poses.size(); ++i) {
-    scene.problem.keyframes.push_back({100 + i, scene.true_poses[i], i == 0});
-  }
-  for (std::size_t i = 0; i < scene.true_points.size(); ++i) {
-    scene.problem.points.push_back({1000 + i, scene.true_points[i]});
-  }
-  return scene;
-}
-
-// Moves every free keyframe by `translation_m` / `angle_deg` and every point by about 3 cm per
-// axis.
-void perturb(std::mt19937& rng, BundleAdjustmentProblem& problem, double translation_m,
-             double angle_deg) {
-  for (BaKeyFrame& keyframe : problem.keyframes) {
-    if (keyframe.fixed) continue;
-    keyframe.T_cw = perturbedPose(rng, keyframe.T_cw, translation_m, angle_deg * M_PI / 180.0);
-  }
-  std::normal_distribution<double> noise(0.0, 0.03);
-  for (BaPoint& point : problem.points) {
-    point.position += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
-  }
-}
 
 // sqrt(sum chi2 / sum dof) over the observations flagged `use`: about 1 at the noise level.
 double normalisedRmsError(const BundleAdjustmentProblem& problem, const std::vector<bool>& use) {
@@ -155,7 +61,7 @@ BundleAdjustmentProblem optimumFromTruth(const BaScene& scene) {
 
 TEST(BundleAdjust, ConvergesToTheOptimumAtTheNoiseLevel) {
   std::mt19937 rng(21);
-  BaScene scene = makeScene(rng, {});
+  BaScene scene = testing::makeBaScene(rng, {});
   const BundleAdjustmentProblem optimum = optimumFromTruth(scene);
   perturb(rng, scene.problem, 0.05, 2.0);
   const std::vector<bool> all(scene.problem.observations.size(), true);
@@ -179,9 +85,9 @@ TEST(BundleAdjust, ConvergesToTheOptimumAtTheNoiseLevel) {
 
 TEST(BundleAdjust, FlagsMismatchedObservations) {
   std::mt19937 rng(22);
-  SceneOptions options;
+  BaSceneOptions options;
   options.mismatched_point_share = 0.2;
-  BaScene scene = makeScene(rng, options);
+  BaScene scene = testing::makeBaScene(rng, options);
   perturb(rng, scene.problem, 0.02, 1.0);
 
   const BundleAdjustmentResult result = bundleAdjust(scene.problem);
@@ -206,9 +112,9 @@ TEST(BundleAdjust, FlagsMismatchedObservations) {
 
 TEST(BundleAdjust, MonocularObservationsWithTwoFixedKeyFrames) {
   std::mt19937 rng(23);
-  SceneOptions options;
+  BaSceneOptions options;
   options.depth_share = 0.0;
-  BaScene scene = makeScene(rng, options);
+  BaScene scene = testing::makeBaScene(rng, options);
   scene.problem.keyframes[1].fixed = true;  // without depth, a second fixed keyframe sets scale
   perturb(rng, scene.problem, 0.02, 1.0);
 
@@ -220,7 +126,7 @@ TEST(BundleAdjust, MonocularObservationsWithTwoFixedKeyFrames) {
 
 TEST(BundleAdjust, WithoutOutlierRemovalRunsTheRobustStageOnly) {
   std::mt19937 rng(24);
-  BaScene scene = makeScene(rng, {});
+  BaScene scene = testing::makeBaScene(rng, {});
   perturb(rng, scene.problem, 0.02, 1.0);
   BundleAdjustmentOptions options;
   options.remove_outliers = false;
@@ -235,7 +141,7 @@ TEST(BundleAdjust, WithoutOutlierRemovalRunsTheRobustStageOnly) {
 
 TEST(BundleAdjust, PointBehindItsCameraIsAnOutlierAndDoesNotBreakTheSolve) {
   std::mt19937 rng(25);
-  BaScene scene = makeScene(rng, {});
+  BaScene scene = testing::makeBaScene(rng, {});
   // Mirror the first observation's point through its camera's centre: it lands behind it.
   const BaObservation& observation = scene.problem.observations.front();
   const Eigen::Vector3d centre =
@@ -252,10 +158,10 @@ TEST(BundleAdjust, PointBehindItsCameraIsAnOutlierAndDoesNotBreakTheSolve) {
 // Beyond 50 free keyframes the solver switches from dense to sparse Schur complement.
 TEST(BundleAdjust, ManyKeyFramesAlsoConvergeToTheNoiseLevel) {
   std::mt19937 rng(29);
-  SceneOptions options;
+  BaSceneOptions options;
   options.num_keyframes = 56;
   options.num_points = 600;
-  BaScene scene = makeScene(rng, options);
+  BaScene scene = testing::makeBaScene(rng, options);
   perturb(rng, scene.problem, 0.01, 0.5);
 
   const BundleAdjustmentResult result = bundleAdjust(scene.problem);
@@ -266,7 +172,7 @@ TEST(BundleAdjust, ManyKeyFramesAlsoConvergeToTheNoiseLevel) {
 
 TEST(BundleAdjust, IsDeterministic) {
   std::mt19937 rng(26);
-  BaScene scene = makeScene(rng, {});
+  BaScene scene = testing::makeBaScene(rng, {});
   perturb(rng, scene.problem, 0.02, 1.0);
   BundleAdjustmentProblem copy = scene.problem;
   bundleAdjust(scene.problem);
@@ -284,7 +190,7 @@ TEST(BundleAdjust, EmptyProblemAndAllFixedKeyFramesAreHandled) {
   EXPECT_TRUE(bundleAdjust(empty).observation_inlier.empty());
 
   std::mt19937 rng(27);
-  BaScene scene = makeScene(rng, {});
+  BaScene scene = testing::makeBaScene(rng, {});
   for (BaKeyFrame& keyframe : scene.problem.keyframes) keyframe.fixed = true;
   const BundleAdjustmentResult result = bundleAdjust(scene.problem);
   EXPECT_EQ(result.observation_inlier.size(), scene.problem.observations.size());
@@ -298,29 +204,6 @@ TEST(BundleAdjust, RejectsOutOfRangeIndices) {
   problem.keyframes.push_back({});
   problem.observations.push_back({0, 0, {}});  // there is no point 0
   EXPECT_THROW(bundleAdjust(problem), std::invalid_argument);
-}
-
-void printTiming(int num_keyframes, int num_points) {
-  std::mt19937 rng(28);
-  SceneOptions options;
-  options.num_keyframes = num_keyframes;
-  options.num_points = num_points;
-  options.mismatched_point_share = 0.05;
-  BaScene scene = makeScene(rng, options);
-  perturb(rng, scene.problem, 0.02, 1.0);
-  const testing::Stopwatch stopwatch;
-  const BundleAdjustmentResult result = bundleAdjust(scene.problem);
-  std::cout << "[timing] bundleAdjust, " << num_keyframes << " keyframes, " << num_points
-            << " points, " << scene.problem.observations.size()
-            << " observations: " << stopwatch.cpuMs() << " ms CPU (" << stopwatch.wallMs()
-            << " ms wall), " << result.iterations << " iterations\n";
-  EXPECT_LT(normalisedRmsError(scene.problem, result.observation_inlier), 1.1);
-}
-
-// Not a pass/fail check on time (sanitiser builds are far slower): prints local BA's cost.
-TEST(BundleAdjustTiming, LocalBundleAdjustmentSizes) {
-  printTiming(10, 2000);
-  printTiming(20, 3000);
 }
 
 }  // namespace

@@ -3,10 +3,7 @@
 // Synthetic cameras, points and noisy observations for the optimiser tests (header-only, never
 // linked into the library).
 
-#include <time.h>
-
 #include <Eigen/Geometry>
-#include <chrono>
 #include <cmath>
 #include <random>
 
@@ -91,26 +88,5 @@ inline double translationError(const geometry::Pose& estimate, const geometry::P
 inline double rotationErrorDegrees(const geometry::Pose& estimate, const geometry::Pose& truth) {
   return degrees(geometry::rotationAngleAccurate(estimate * truth.inverse()));
 }
-
-// Wall-clock and this thread's CPU time since construction, in milliseconds. The CPU time is the
-// fairer figure on a machine shared with other jobs.
-class Stopwatch {
- public:
-  [[nodiscard]] double wallMs() const {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_)
-        .count();
-  }
-  [[nodiscard]] double cpuMs() const { return threadCpuMs() - cpu_; }
-
- private:
-  static double threadCpuMs() {
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
-  }
-
-  std::chrono::steady_clock::time_point wall_ = std::chrono::steady_clock::now();
-  double cpu_ = threadCpuMs();
-};
 
 }  // namespace segslam::optim::testing

@@ -2,48 +2,19 @@
 
 #include <gtest/gtest.h>
 
-#include <iostream>
 #include <random>
 #include <vector>
 
-#include "segslam/optim/optim_test_scene.h"
+#include "segslam/optim/optim_test_problems.h"
 
 namespace segslam::optim {
 namespace {
 
+using testing::DepthMix;
 using testing::perturbedPose;
+using testing::PoseScene;
 using testing::rotationErrorDegrees;
 using testing::translationError;
-
-enum class DepthMix { kAll, kNone, kHalf };
-
-// A frame's observations of random visible points, a share of them gross mismatches.
-struct PoseScene {
-  StereoIntrinsics intrinsics;
-  geometry::Pose T_cw;
-  std::vector<PoseObservation> observations;
-  std::vector<bool> is_outlier;  // ground truth
-};
-
-PoseScene makeScene(std::mt19937& rng, int num_points, double outlier_ratio, DepthMix depth) {
-  PoseScene scene;
-  scene.T_cw = geometry::poseFromTranslationQuaternion({0.3, -0.2, 1.0},
-                                                       Eigen::Quaterniond(0.95, 0.1, -0.2, 0.05));
-  std::bernoulli_distribution outlier(outlier_ratio);
-  std::bernoulli_distribution coin(0.5);
-  for (int i = 0; i < num_points; ++i) {
-    const Eigen::Vector3d p_w =
-        testing::randomVisiblePoint(rng, scene.intrinsics, scene.T_cw, 0.8, 6.0);
-    const bool with_depth = depth == DepthMix::kAll || (depth == DepthMix::kHalf && coin(rng));
-    const bool is_outlier = outlier(rng);
-    const RgbdObservation observation =
-        is_outlier ? testing::randomObservation(rng, scene.intrinsics, with_depth)
-                   : testing::noisyObservation(rng, scene.intrinsics, scene.T_cw, p_w, with_depth);
-    scene.observations.push_back({p_w, observation});
-    scene.is_outlier.push_back(is_outlier);
-  }
-  return scene;
-}
 
 struct Labelling {
   double outlier_recall;  // share of true outliers labelled outlier
@@ -81,7 +52,7 @@ TEST_P(PoseOptimizerRecovery, FromPerturbedPoseWithGrossOutliers) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 5; ++trial) {
     SCOPED_TRACE(trial);
-    const PoseScene scene = makeScene(rng, 300, 0.25, GetParam());
+    const PoseScene scene = testing::makePoseScene(rng, 300, 0.25, GetParam());
     const geometry::Pose initial = perturbedPose(rng, scene.T_cw, 0.10, 5.0 * M_PI / 180.0);
     expectRecovered(scene, optimizePose(scene.intrinsics, initial, scene.observations));
   }
@@ -92,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(DepthMixes, PoseOptimizerRecovery,
 
 TEST(PoseOptimizer, PointsBehindTheCameraAreOutliers) {
   std::mt19937 rng(11);
-  PoseScene scene = makeScene(rng, 100, 0.0, DepthMix::kAll);
+  PoseScene scene = testing::makePoseScene(rng, 100, 0.0, DepthMix::kAll);
   // Mirror a few points through the camera centre: they land behind it.
   const Eigen::Vector3d centre = scene.T_cw.inverse().translation();
   for (int i = 0; i < 5; ++i) {
@@ -107,7 +78,7 @@ TEST(PoseOptimizer, PointsBehindTheCameraAreOutliers) {
 
 TEST(PoseOptimizer, TooFewObservationsKeepTheInitialPose) {
   std::mt19937 rng(3);
-  const PoseScene scene = makeScene(rng, 2, 0.0, DepthMix::kAll);
+  const PoseScene scene = testing::makePoseScene(rng, 2, 0.0, DepthMix::kAll);
   const geometry::Pose initial = perturbedPose(rng, scene.T_cw, 0.05, 0.02);
   const PoseOptimizationResult result = optimizePose(scene.intrinsics, initial, scene.observations);
   EXPECT_TRUE(result.T_cw.isApprox(initial));
@@ -120,22 +91,6 @@ TEST(PoseOptimizer, NoObservationsIsANoOp) {
   EXPECT_TRUE(result.T_cw.isApprox(initial));
   EXPECT_TRUE(result.inlier.empty());
   EXPECT_EQ(result.num_inliers, 0);
-}
-
-// Not a pass/fail check (sanitiser builds are far slower): prints the hot path's cost.
-TEST(PoseOptimizerTiming, FiveHundredObservations) {
-  std::mt19937 rng(5);
-  const PoseScene scene = makeScene(rng, 500, 0.2, DepthMix::kHalf);
-  const geometry::Pose initial = perturbedPose(rng, scene.T_cw, 0.03, 1.0 * M_PI / 180.0);
-  constexpr int kRepeats = 50;
-  int num_inliers = 0;
-  const testing::Stopwatch stopwatch;
-  for (int i = 0; i < kRepeats; ++i) {
-    num_inliers += optimizePose(scene.intrinsics, initial, scene.observations).num_inliers;
-  }
-  std::cout << "[timing] optimizePose, 500 observations: " << stopwatch.cpuMs() / kRepeats
-            << " ms CPU (" << stopwatch.wallMs() / kRepeats << " ms wall) per call\n";
-  EXPECT_GT(num_inliers, 0);
 }
 
 }  // namespace
