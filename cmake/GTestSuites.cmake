@@ -6,9 +6,9 @@
 # (`A+B+C+...`, so `ctest -R Suite` still finds a suite). Few processes rather than one per test
 # or per suite: starting the test binary costs 0.3 s (0.8 s under ASan; the dynamic loader
 # resolving Open3D's libraries), and a suite's shared fixture (SetUpTestSuite) is built once.
-# The FIRST suites run whole sequences (or the CLI on them): CTest starts them before the others, so that the last
-# minutes of a parallel run are not one of them running alone. Run a single test with
-# `TARGET --gtest_filter=Suite.Test`.
+# The FIRST suites run whole sequences (or the CLI on them): CTest starts them before the
+# others, so that the last minutes of a parallel run are not one of them running alone. Run a
+# single test with `TARGET --gtest_filter=Suite.Test`.
 set(SEGSLAM_GTEST_SUITES_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/gtest_suites_discovery.cmake)
 
 function(segslam_add_gtest_suites target)
