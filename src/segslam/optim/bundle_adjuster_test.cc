@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "segslam/optim/optim_test_problems.h"
@@ -204,6 +205,22 @@ TEST(BundleAdjust, RejectsOutOfRangeIndices) {
   problem.keyframes.push_back({});
   problem.observations.push_back({0, 0, {}});  // there is no point 0
   EXPECT_THROW(bundleAdjust(problem), std::invalid_argument);
+}
+
+// Problems the size local mapping meets (10 keyframes / 2000 points, 20 / 3000), with mismatches:
+// still the noise level. Their solve time is bench/optimizer.cc's.
+TEST(BundleAdjust, LocalMappingSizedProblemsWithMismatchesConverge) {
+  std::mt19937 rng(28);
+  for (const auto& [num_keyframes, num_points] : {std::pair{10, 2000}, std::pair{20, 3000}}) {
+    BaSceneOptions options;
+    options.num_keyframes = num_keyframes;
+    options.num_points = num_points;
+    options.mismatched_point_share = 0.05;
+    BaScene scene = testing::makeBaScene(rng, options);
+    perturb(rng, scene.problem, 0.02, 1.0);
+    const BundleAdjustmentResult result = bundleAdjust(scene.problem);
+    EXPECT_LT(normalisedRmsError(scene.problem, result.observation_inlier), 1.1) << num_keyframes;
+  }
 }
 
 }  // namespace
