@@ -15,13 +15,11 @@
 namespace segslam::dense {
 
 MapBuilder::MapBuilder(const core::Camera& camera, MapBuilderOptions options)
-    : camera_(camera),
-      maker_(camera, options.keyframe),
-      options_(options),
-      worker_([this] { work(); }) {
+    : camera_(camera), maker_(camera, options.keyframe), options_(options) {
   // Views of one surface share cells only when a cell holds more than one voxel.
   options_.objects.cell_size =
       std::max(options_.objects.cell_size, 2.0 * options_.keyframe.voxel_size);
+  if (!options_.synchronous) worker_ = std::thread([this] { work(); });
 }
 
 MapBuilder::~MapBuilder() {
@@ -30,20 +28,21 @@ MapBuilder::~MapBuilder() {
     stopping_ = true;
   }
   changed_.notify_all();
-  worker_.join();
+  if (worker_.joinable()) worker_.join();
 }
 
 void MapBuilder::addKeyFrame(std::uint64_t id, double timestamp, KeyFrameImages images) {
   {
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
     queue_.push_back({id, timestamp, std::move(images)});
+    if (options_.synchronous) makeFront(lock);
   }
   changed_.notify_all();
 }
 
 void MapBuilder::setLiveKeyFrames(core::Trajectory live) {
   {
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
     // Poses are noted at once: a keyframe culled before the map thread folds is still placed.
     for (const auto& pose : live.poses()) {
       const auto it = clouds_.lower_bound(pose.timestamp - 1e-4);
@@ -54,6 +53,7 @@ void MapBuilder::setLiveKeyFrames(core::Trajectory live) {
       }
     }
     pending_live_ = std::move(live);
+    if (options_.synchronous) foldPending(lock);
   }
   changed_.notify_all();
 }

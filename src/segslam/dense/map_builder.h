@@ -25,6 +25,10 @@ struct MapBuilderOptions {
   ObjectMapOptions objects;  // its cell size is at least 2 voxels
   // Niceness of the map thread: tracking comes first, a keyframe cloud can wait.
   int thread_niceness = 10;
+  // No map thread: clouds are made and culled ones folded on the caller's thread as they are
+  // handed over. Which clouds a fold finds, and under which poses, then no longer depends on
+  // when the map thread ran, so a deterministic run gives the same map every time.
+  bool synchronous = false;
 };
 
 // What one keyframe of the built map saw, in the world: handed to a KeyFrameScanSink by
@@ -57,15 +61,16 @@ class MapBuilder {
   MapBuilder(const MapBuilder&) = delete;
   MapBuilder& operator=(const MapBuilder&) = delete;
 
-  // Queues a keyframe and returns at once. The images are shared, not copied: the caller must
-  // not write into them afterwards. Timestamps must be unique.
+  // Queues a keyframe and returns at once (synchronous: once its cloud is made). The images are
+  // shared, not copied: the caller must not write into them afterwards. Timestamps must be unique.
   void addKeyFrame(std::uint64_t id, double timestamp, KeyFrameImages images);
   // The latest poses of the live keyframes (camera to world, e.g. SLAM's keyframe trajectory
   // after each new keyframe). A keyframe whose cloud the map holds, older than the newest of them
   // and missing from them, was culled: its cloud is folded into the cloud of the live keyframe
   // with the nearest view (foldInto), so what it saw stays in the map while the clouds kept are
-  // as many as the live keyframes, not as all keyframes ever made. Returns at once; the map
-  // thread folds. A keyframe culled before any of these calls saw it live is left out (dropped).
+  // as many as the live keyframes, not as all keyframes ever made. Returns at once and the map
+  // thread folds (synchronous: returns folded). A keyframe culled before any of these calls saw it
+  // live is left out (dropped).
   void setLiveKeyFrames(core::Trajectory live);
   // The static map of an earlier session, in this run's world frame (a loaded map file's dense
   // map): build() keeps its points that none of this run's keyframes sees through
@@ -140,7 +145,7 @@ class MapBuilder {
   std::map<double, geometry::Pose> poses_before_cloud_;
   MapTimings timings_;
   std::exception_ptr error_;
-  std::thread worker_;
+  std::thread worker_;  // none when synchronous
 };
 
 }  // namespace segslam::dense

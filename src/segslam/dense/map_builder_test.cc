@@ -107,6 +107,43 @@ TEST(MapBuilder, CulledKeyFramesAreFoldedIntoTheNearestLiveOneAndMoveWithIt) {
   EXPECT_GT(only_second_saw, 100u);
 }
 
+// Deterministic runs: each live set is folded as it is handed over, under its own poses. A map
+// thread may fold only the latest of several sets it finds waiting, under the latest poses (here:
+// the culled keyframe's wall would land at z = 1, not 2).
+TEST(MapBuilder, SynchronousBuilderFoldsEachLiveSetUnderItsOwnPoses) {
+  const auto camera = test_scene::smallCamera();
+  MapBuilderOptions options = testOptions();
+  options.synchronous = true;
+  MapBuilder builder(camera, options);
+  builder.addKeyFrame(0, 1.0, flatView(camera, 1.0f, 50));
+  builder.addKeyFrame(1, 2.0, flatView(camera, 1.0f, 200));
+  builder.addKeyFrame(2, 3.0, flatView(camera, 1.0f, 120));
+  core::Trajectory all;
+  all.append(1.0, translation(0.0, 0.0, 0.0));
+  all.append(2.0, translation(0.5, 0.0, 0.0));
+  all.append(3.0, translation(10.0, 0.0, 5.0));
+  builder.setLiveKeyFrames(all);
+  core::Trajectory second_culled;
+  second_culled.append(1.0, translation(0.0, 0.0, 0.0));
+  second_culled.append(3.0, translation(10.0, 0.0, 5.0));
+  builder.setLiveKeyFrames(second_culled);
+  core::Trajectory first_moved;  // before any map thread could have run
+  first_moved.append(1.0, translation(0.0, 0.0, 1.0));
+  first_moved.append(3.0, translation(10.0, 0.0, 5.0));
+  builder.setLiveKeyFrames(first_moved);
+
+  const DenseMap map = builder.build(first_moved);
+  std::size_t only_second_saw = 0;
+  for (std::size_t i = 0; i < map.static_points.size(); ++i) {
+    const Eigen::Vector3f& p = map.static_points.points[i];
+    if (p.x() > 0.45f && p.x() < 1.0f) {
+      ++only_second_saw;
+      EXPECT_NEAR(p.z(), 2.0f, 1e-4f);
+    }
+  }
+  EXPECT_GT(only_second_saw, 100u);
+}
+
 TEST(MapBuilder, AnEarlierSessionsMapKeepsWhatThisRunDidNotSeeThrough) {
   const auto camera = test_scene::smallCamera();
   MapBuilder builder(camera, testOptions());

@@ -28,6 +28,7 @@ SlamPipeline::SlamPipeline(const core::Camera& camera, FrameMaskSource& masks,
   if (!options.build_map) return;
   dense::MapBuilderOptions map_options = options.map;
   map_options.keyframe.mask_dilation_px = options.slam.mask_dilation_px;
+  map_options.synchronous = options.slam.deterministic;
   map_builder_.emplace(camera, map_options);
   map_feed_.emplace(*map_builder_, masks.segmentsKeyFrames());
   if (!loaded_) return;
