@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include "segslam/dense/dense_test_scene.h"
 #include "segslam/segmentation/semantic_class_map.h"
@@ -74,47 +75,9 @@ TEST(MapBuilder, KeyFramesWithoutPoseAreLeftOutAndRebuildsFollowNewPoses) {
   for (const auto& p : moved.static_points.points) EXPECT_NEAR(p.z(), 4.0f, 1e-4f);
 }
 
-TEST(MapBuilder, CulledKeyFramesAreFoldedIntoTheNearestLiveOneAndMoveWithIt) {
-  const auto camera = test_scene::smallCamera();
-  MapBuilder builder(camera, testOptions());
-  builder.addKeyFrame(0, 1.0, flatView(camera, 1.0f, 50));
-  builder.addKeyFrame(1, 2.0, flatView(camera, 1.0f, 200));
-  builder.addKeyFrame(2, 3.0, flatView(camera, 1.0f, 120));
-  core::Trajectory all;
-  all.append(1.0, translation(0.0, 0.0, 0.0));
-  all.append(2.0, translation(0.5, 0.0, 0.0));  // beside the first, sees more of the wall
-  all.append(3.0, translation(10.0, 0.0, 5.0));
-  builder.setLiveKeyFrames(all);
-  core::Trajectory second_culled;
-  second_culled.append(1.0, translation(0.0, 0.0, 0.0));
-  second_culled.append(3.0, translation(10.0, 0.0, 5.0));
-  builder.setLiveKeyFrames(second_culled);
-  EXPECT_EQ(builder.numKeyFrames(), 2u);  // one cloud fewer, its view kept in the first's
-
-  core::Trajectory corrected;  // a loop correction moves the first keyframe 1 m forward
-  corrected.append(1.0, translation(0.0, 0.0, 1.0));
-  corrected.append(3.0, translation(10.0, 0.0, 5.0));
-  const DenseMap map = builder.build(corrected);
-  std::size_t only_second_saw = 0;
-  for (std::size_t i = 0; i < map.static_points.size(); ++i) {
-    const Eigen::Vector3f& p = map.static_points.points[i];
-    if (p.x() > 0.45f && p.x() < 1.0f) {
-      ++only_second_saw;
-      EXPECT_EQ(map.static_points.colours[i][0], 200);
-      EXPECT_NEAR(p.z(), 2.0f, 1e-4f);
-    }
-  }
-  EXPECT_GT(only_second_saw, 100u);
-}
-
-// Deterministic runs: each live set is folded as it is handed over, under its own poses. A map
-// thread may fold only the latest of several sets it finds waiting, under the latest poses (here:
-// the culled keyframe's wall would land at z = 1, not 2).
-TEST(MapBuilder, SynchronousBuilderFoldsEachLiveSetUnderItsOwnPoses) {
-  const auto camera = test_scene::smallCamera();
-  MapBuilderOptions options = testOptions();
-  options.synchronous = true;
-  MapBuilder builder(camera, options);
+// Three keyframes: the second beside the first (it sees more of the wall), the third far away;
+// then a live set without the second, which culls it.
+void cullTheSecondOfThreeViews(MapBuilder& builder, const core::Camera& camera) {
   builder.addKeyFrame(0, 1.0, flatView(camera, 1.0f, 50));
   builder.addKeyFrame(1, 2.0, flatView(camera, 1.0f, 200));
   builder.addKeyFrame(2, 3.0, flatView(camera, 1.0f, 120));
@@ -127,21 +90,56 @@ TEST(MapBuilder, SynchronousBuilderFoldsEachLiveSetUnderItsOwnPoses) {
   second_culled.append(1.0, translation(0.0, 0.0, 0.0));
   second_culled.append(3.0, translation(10.0, 0.0, 5.0));
   builder.setLiveKeyFrames(second_culled);
-  core::Trajectory first_moved;  // before any map thread could have run
-  first_moved.append(1.0, translation(0.0, 0.0, 1.0));
-  first_moved.append(3.0, translation(10.0, 0.0, 5.0));
-  builder.setLiveKeyFrames(first_moved);
+}
 
-  const DenseMap map = builder.build(first_moved);
-  std::size_t only_second_saw = 0;
+// The first keyframe 1 m forward of where it was, the third where it was.
+core::Trajectory firstMovedForward() {
+  core::Trajectory moved;
+  moved.append(1.0, translation(0.0, 0.0, 1.0));
+  moved.append(3.0, translation(10.0, 0.0, 5.0));
+  return moved;
+}
+
+// The map's points of the wall that only the second keyframe saw.
+std::vector<std::size_t> onlySecondSaw(const DenseMap& map) {
+  std::vector<std::size_t> indices;
   for (std::size_t i = 0; i < map.static_points.size(); ++i) {
-    const Eigen::Vector3f& p = map.static_points.points[i];
-    if (p.x() > 0.45f && p.x() < 1.0f) {
-      ++only_second_saw;
-      EXPECT_NEAR(p.z(), 2.0f, 1e-4f);
-    }
+    const float x = map.static_points.points[i].x();
+    if (x > 0.45f && x < 1.0f) indices.push_back(i);
   }
-  EXPECT_GT(only_second_saw, 100u);
+  return indices;
+}
+
+TEST(MapBuilder, CulledKeyFramesAreFoldedIntoTheNearestLiveOneAndMoveWithIt) {
+  const auto camera = test_scene::smallCamera();
+  MapBuilder builder(camera, testOptions());
+  cullTheSecondOfThreeViews(builder, camera);
+  EXPECT_EQ(builder.numKeyFrames(), 2u);  // one cloud fewer, its view kept in the first's
+
+  const DenseMap map = builder.build(firstMovedForward());  // as a loop correction would
+  const auto indices = onlySecondSaw(map);
+  EXPECT_GT(indices.size(), 100u);
+  for (const std::size_t i : indices) {
+    EXPECT_EQ(map.static_points.colours[i][0], 200);
+    EXPECT_NEAR(map.static_points.points[i].z(), 2.0f, 1e-4f);
+  }
+}
+
+// Deterministic runs: each live set is folded as it is handed over, under its own poses. A map
+// thread may fold only the latest of several sets it finds waiting, under the latest poses (here:
+// the culled keyframe's wall would land at z = 1, not 2).
+TEST(MapBuilder, SynchronousBuilderFoldsEachLiveSetUnderItsOwnPoses) {
+  const auto camera = test_scene::smallCamera();
+  MapBuilderOptions options = testOptions();
+  options.synchronous = true;
+  MapBuilder builder(camera, options);
+  cullTheSecondOfThreeViews(builder, camera);
+  builder.setLiveKeyFrames(firstMovedForward());  // before any map thread could have run
+
+  const DenseMap map = builder.build(firstMovedForward());
+  const auto indices = onlySecondSaw(map);
+  EXPECT_GT(indices.size(), 100u);
+  for (const std::size_t i : indices) EXPECT_NEAR(map.static_points.points[i].z(), 2.0f, 1e-4f);
 }
 
 TEST(MapBuilder, AnEarlierSessionsMapKeepsWhatThisRunDidNotSeeThrough) {
