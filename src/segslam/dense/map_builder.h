@@ -50,10 +50,10 @@ struct MapTimings {
 };
 
 // Builds the dense map of a run off the tracking thread. Keyframes are handed over as they are
-// made; a worker thread turns each into a voxelised cloud in its own camera frame, kept packed
-// (PackedKeyFrameCloud: a long session holds one per live keyframe). The world map is assembled
-// only in build(), from whatever keyframe poses are final then, so a loop correction needs
-// nothing but another build() with the corrected poses.
+// made; a worker thread (the caller's, when synchronous) turns each into a voxelised cloud in its
+// own camera frame, kept packed (PackedKeyFrameCloud: a long session holds one per live
+// keyframe). The world map is assembled only in build(), from whatever keyframe poses are final
+// then, so a loop correction needs nothing but another build() with the corrected poses.
 class MapBuilder {
  public:
   MapBuilder(const core::Camera& camera, MapBuilderOptions options);
