@@ -54,20 +54,6 @@ fmt::ostream openText(const std::filesystem::path& file) {
   }
 }
 
-nlohmann::json optionsJson(const SynthOptions& options) {
-  return {{"frames", options.frames},
-          {"width", options.width},
-          {"height", options.height},
-          {"path", options.path},
-          {"laps", options.laps},
-          {"people", options.people},
-          {"person_speed", options.person_speed},
-          {"person_size", options.person_size},
-          {"moved_furniture", options.moved_furniture},
-          {"depth_noise", options.depth_noise},
-          {"seed", options.seed}};
-}
-
 nlohmann::json cameraJson(const core::Camera& camera) {
   return {{"width", camera.width},
           {"height", camera.height},
@@ -177,7 +163,7 @@ void SequenceWriter::writeMeta(const SyntheticSequence& sequence) const {
       {"generator", kGenerator},
       {"generator_version", kGeneratorVersion},
       {"segslam_version", SEGSLAM_VERSION},
-      {"options", optionsJson(sequence.options())},
+      {"options", toJson(sequence.options())},
       {"camera", cameraJson(sequence.camera())},
       {"frame_count", sequence.frameCount()},
       {"start_timestamp", kSynthStartTimestamp},

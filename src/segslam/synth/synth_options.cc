@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "segslam/util/error.h"
 
@@ -67,6 +68,20 @@ core::Camera synthCamera(const SynthOptions& options) {
   camera.depth_factor = kSynthDepthFactor;
   camera.fps = kSynthFps;
   return camera;
+}
+
+nlohmann::json toJson(const SynthOptions& options) {
+  return {{"frames", options.frames},
+          {"width", options.width},
+          {"height", options.height},
+          {"path", options.path},
+          {"laps", options.laps},
+          {"people", options.people},
+          {"person_speed", options.person_speed},
+          {"person_size", options.person_size},
+          {"moved_furniture", options.moved_furniture},
+          {"depth_noise", options.depth_noise},
+          {"seed", options.seed}};
 }
 
 double frameTimestamp(int frame) { return kSynthStartTimestamp + frame / kSynthFps; }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,9 @@ void validateOptions(const SynthOptions& options);
 // The pinhole camera of a synthetic sequence: fx = fy = 525 * width / 640, principal point at the
 // image centre, no distortion, depth factor 5000, 30 fps.
 core::Camera synthCamera(const SynthOptions& options);
+
+// Every option by name, as meta.json records them: equal options give equal JSON.
+nlohmann::json toJson(const SynthOptions& options);
 
 // Timestamp of frame k in seconds: kSynthStartTimestamp + k / fps.
 double frameTimestamp(int frame);

@@ -9,6 +9,7 @@
 #include "segslam/system/map_evaluation.h"
 #include "segslam/system/map_rebuild.h"
 #include "segslam/system/sequence_runner.h"
+#include "segslam/testing/synth_sequences.h"
 #include "segslam/testing/test_support.h"
 #include "segslam/util/error.h"
 
@@ -25,8 +26,7 @@ TEST(DenseMapEndToEnd, SyntheticRunWritesACleanMapThatRebuilds) {
   synth_options.frames = 45;
   synth_options.people = 1;
   synth_options.seed = 3;
-  synth::generateSequence(synth_options, dir.path() / "sequence");
-  const auto dataset = io::TumDataset::open(dir.path() / "sequence");
+  const auto dataset = io::TumDataset::open(testing::sharedSequence(synth_options));
   SequenceRunOptions options;
   options.slam.deterministic = true;
   options.masks.source = MaskSource::kOracle;

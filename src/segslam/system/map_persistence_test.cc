@@ -75,7 +75,6 @@ class MapSessions : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new testing::ScopedTempDir;
-    synth::generateSequence(testing::noisyRoomLap(240), lap());
     auto options = sessionOptions();
     options.max_frames = kMapFrames;
     options.map_file.save = mapFile();
@@ -86,7 +85,7 @@ class MapSessions : public ::testing::Test {
     delete first_session_;
     delete dir_;
   }
-  static fs::path lap() { return dir_->path() / "lap"; }
+  static fs::path lap() { return testing::sharedSequence(testing::noisyRoomLap(240)); }
   static fs::path mapFile() { return dir_->path() / "session1.map"; }
 
   static SequenceRunSummary runSession(const fs::path& dataset, SequenceRunOptions options,
@@ -317,7 +316,6 @@ TEST_F(MapSessions, PointsOfAChairMovedSinceTheMapWasMadeAreCulled) {
   runSequence(io::TumDataset::open(lap()), options, dir_->path() / "whole_lap", {});
   auto moved_lap = testing::noisyRoomLap(240);
   moved_lap.moved_furniture = true;
-  synth::generateSequence(moved_lap, dir_->path() / "moved_lap");
 
   const auto dataset = io::TumDataset::open(lap());
   const geometry::Pose T_world_map = dataset.groundTruth()->poses().front().T_wc;
@@ -326,7 +324,7 @@ TEST_F(MapSessions, PointsOfAChairMovedSinceTheMapWasMadeAreCulled) {
   const Eigen::Vector2d old_place = synth::chairPush(1.0).start.translation().head<2>();
   std::map<std::string, int> occupied_at_old_place;
   for (const auto& [name, sequence] :
-       {std::pair{"moved", dir_->path() / "moved_lap"}, std::pair{"unchanged", lap()}}) {
+       {std::pair{"moved", testing::sharedSequence(moved_lap)}, std::pair{"unchanged", lap()}}) {
     auto session = sessionOptions();
     session.build_map = true;
     session.map_file.load = dir_->path() / "whole_lap.map";

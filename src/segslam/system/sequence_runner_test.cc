@@ -18,7 +18,9 @@
 
 // End-to-end runs of the whole pipeline (extraction, tracking, local mapping) in deterministic
 // mode. The bounds are several times the figures measured by bench/tracking_accuracy.sh, so they
-// catch a broken pipeline without depending on the last tenth of a millimetre.
+// catch a broken pipeline without depending on the last tenth of a millimetre. Runs that test
+// tracking leave the dense map out (a third of a run's time; it does not change the poses):
+// DeterministicModeRepeatsItself and DenseMapEndToEnd test it.
 namespace segslam::system {
 namespace {
 
@@ -26,9 +28,11 @@ using testing::ScopedTempDir;
 
 SequenceRunSummary runDeterministic(const std::filesystem::path& dataset_dir, MaskSource masks,
                                     const std::filesystem::path& out_dir,
-                                    std::size_t max_frames = SIZE_MAX, bool loop_closing = true) {
+                                    std::size_t max_frames = SIZE_MAX, bool loop_closing = true,
+                                    bool build_map = false) {
   SequenceRunOptions options;
   options.slam.deterministic = true;
+  options.build_map = build_map;
   options.slam.loop_closing = loop_closing;
   options.masks.source = masks;
   options.max_frames = max_frames;
@@ -70,6 +74,7 @@ TEST(SequenceRunner, KeyframesMapTheFarWallBeyondTheCloseDepth) {
   SequenceRunOptions options;
   options.slam.deterministic = true;
   options.slam.loop_closing = false;
+  options.build_map = false;
   const auto noop = [](const FrameStats&) {};
   const auto far = runSequence(dataset, options, dir.path() / "far", noop);
   options.slam.tracker.new_point_depth_factor = 1.0;
@@ -80,9 +85,8 @@ TEST(SequenceRunner, KeyframesMapTheFarWallBeyondTheCloseDepth) {
 
 TEST(SequenceRunner, OracleMasksKeepWalkingPeopleOutOfThePose) {
   const ScopedTempDir dir;
-  synth::generateSequence(syntheticSequence(2), dir.path() / "sequence");
-  const auto masked =
-      runDeterministic(dir.path() / "sequence", MaskSource::kOracle, dir.path() / "masked");
+  const auto masked = runDeterministic(testing::sharedSequence(syntheticSequence(2)),
+                                       MaskSource::kOracle, dir.path() / "masked");
   EXPECT_EQ(masked.tracked_frames, 90u);
   EXPECT_LT(ateRmse(masked), 0.005);
 }
@@ -91,11 +95,12 @@ TEST(SequenceRunner, DeterministicModeRepeatsItself) {
   const ScopedTempDir dir;
   synth::SynthOptions options = syntheticSequence(1);
   options.frames = 40;
-  synth::generateSequence(options, dir.path() / "sequence");
-  const auto first =
-      runDeterministic(dir.path() / "sequence", MaskSource::kOracle, dir.path() / "first");
-  const auto second =
-      runDeterministic(dir.path() / "sequence", MaskSource::kOracle, dir.path() / "second");
+  const auto sequence = testing::sharedSequence(options);
+  const auto run = [&](const char* name) {
+    return runDeterministic(sequence, MaskSource::kOracle, dir.path() / name, SIZE_MAX, true, true);
+  };
+  const auto first = run("first");
+  const auto second = run("second");
   EXPECT_EQ(first.keyframes, second.keyframes);
   EXPECT_EQ(first.map_points, second.map_points);
   EXPECT_DOUBLE_EQ(ateRmse(first), ateRmse(second));
@@ -114,8 +119,7 @@ TEST(SequenceRunner, RealtimePlaybackKeepsToTheSequencesTimestamps) {
   const ScopedTempDir dir;
   synth::SynthOptions synth_options = syntheticSequence(0);
   synth_options.frames = 45;
-  synth::generateSequence(synth_options, dir.path() / "sequence");
-  const auto dataset = io::TumDataset::open(dir.path() / "sequence");
+  const auto dataset = io::TumDataset::open(testing::sharedSequence(synth_options));
   SequenceRunOptions options;
   options.realtime = true;
   options.build_map = false;
@@ -149,9 +153,8 @@ TEST(SequenceRunner, ARunShorterThanTheRpeDeltaReportsTheRpeAsNotComputed) {
   const ScopedTempDir dir;
   synth::SynthOptions synth_options = syntheticSequence(0);
   synth_options.frames = 20;
-  synth::generateSequence(synth_options, dir.path() / "sequence");
-  const auto summary = runSequence(io::TumDataset::open(dir.path() / "sequence"), quickOptions(),
-                                   dir.path() / "run", [](const FrameStats&) {});
+  const auto summary = runSequence(io::TumDataset::open(testing::sharedSequence(synth_options)),
+                                   quickOptions(), dir.path() / "run", [](const FrameStats&) {});
   ASSERT_TRUE(summary.evaluation);
   EXPECT_LT(ateRmse(summary), 0.005);
   EXPECT_FALSE(summary.evaluation->rpe);
@@ -274,6 +277,7 @@ TEST(SequenceRunner, RealWalkerWithSemanticMasksFromTheNetwork) {
   // The network runs inline on every 5th frame and on every keyframe, whose own mask local
   // mapping waits for.
   options.slam.deterministic = true;
+  options.build_map = false;
   options.max_frames = 150;
   options.masks.source = MaskSource::kSemantic;
   options.masks.model_config =
@@ -315,6 +319,7 @@ TEST(SequenceRunner, RealCrowdStartedAmongPeople) {
   const ScopedTempDir dir;
   SequenceRunOptions options;
   options.slam.deterministic = true;
+  options.build_map = false;
   options.masks.source = MaskSource::kSemantic;
   options.masks.model_config =
       std::filesystem::path(SEGSLAM_SOURCE_DIR) / "config/models/espnetv2_voc_384.yaml";

@@ -4,14 +4,18 @@
 // of test_support.h, which tests include after cpp-httplib's header: that one brings <resolv.h>,
 // whose `_res` macro breaks the Eigen headers that synth options pull in.
 
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdint>
 #include <filesystem>
-#include <memory>
 #include <mutex>
-#include <utility>
-#include <vector>
+#include <nlohmann/json.hpp>
+#include <string>
 
 #include "segslam/synth/generator.h"
 #include "segslam/synth/synth_options.h"
+#include "segslam/testing/synth_fingerprint.h"
 #include "segslam/testing/test_support.h"
 
 namespace segslam::testing {
@@ -30,20 +34,29 @@ inline synth::SynthOptions noisyRoomLap(int frames) {
   return lap;
 }
 
-// The sequence `options` describe, rendered once per test process into a folder removed when the
-// process ends: tests that only read the same frames share them instead of rendering them again
-// (a whole-sequence suite runs in one process, see cmake/GTestSuites.cmake). Never write into it.
+// The sequence `options` describe, rendered once into SEGSLAM_TEST_SEQUENCE_CACHE (the source
+// tree's .cache/test_sequences) under the renderer's fingerprint and kept there: the test
+// processes of a run, and the plain and sanitizer builds' runs, read the same frames instead of
+// each rendering them again. A sequence is rendered into a folder of its own and renamed into
+// place, so that a process never sees one half written, whichever process renders it first.
+// Never write into it; the cache can be deleted at any time.
 inline std::filesystem::path sharedSequence(const synth::SynthOptions& options) {
+  namespace fs = std::filesystem;
   static std::mutex mutex;
-  static std::vector<std::pair<synth::SynthOptions, std::unique_ptr<ScopedTempDir>>> rendered;
   const std::lock_guard lock(mutex);
-  for (const auto& [rendered_options, dir] : rendered) {
-    if (rendered_options == options) return dir->path() / "sequence";
-  }
-  auto dir = std::make_unique<ScopedTempDir>();
-  synth::generateSequence(options, dir->path() / "sequence");
-  rendered.emplace_back(options, std::move(dir));
-  return rendered.back().second->path() / "sequence";
+  const std::string key = synth::toJson(options).dump();
+  std::uint64_t hash = 14695981039346656037ULL;  // FNV-1a, stable across builds and runs
+  for (const unsigned char c : key) hash = (hash ^ c) * 1099511628211ULL;
+  const fs::path root = fs::path(SEGSLAM_TEST_SEQUENCE_CACHE) / SEGSLAM_SYNTH_FINGERPRINT;
+  const fs::path folder = root / fmt::format("{:016x}", hash);
+  if (fs::is_directory(folder)) return folder;
+  const fs::path partial = root / fmt::format("{:016x}.{}.part", hash, ::getpid());
+  fs::remove_all(partial);
+  synth::generateSequence(options, partial);
+  std::error_code taken;  // another process renamed its rendering into place first
+  fs::rename(partial, folder, taken);
+  if (taken) fs::remove_all(partial);
+  return folder;
 }
 
 }  // namespace segslam::testing
