@@ -110,14 +110,14 @@ void OrbExtractor::forEachLevel(const LevelWork& work) const {
 void OrbExtractor::run(const cv::Mat& gray, const cv::Mat& dynamic_mask,
                        std::vector<cv::KeyPoint>& keypoints, cv::Mat* descriptors) {
   validateInput(gray, dynamic_mask);
-  const StaticMask static_mask(dynamic_mask, options_.mask_dilation_px);
+  static_mask_.assign(dynamic_mask, options_.mask_dilation_px);
   buildImagePyramid(gray, scale_levels_, pyramid_);
   const FastGridOptions grid = fastGridOptions(options_);
   std::vector<std::vector<cv::KeyPoint>> level_keypoints(numLevels());
   forEachLevel([&](int level) {
     level_keypoints[level] = detectFastInGrid(
         pyramid_[level], LevelToBase::between(pyramid_[0].size(), pyramid_[level].size()),
-        static_mask, grid);
+        static_mask_, grid);
   });
 
   std::vector<int> capacities;

@@ -5,6 +5,7 @@
 
 #include "segslam/feature/orb_descriptor.h"
 #include "segslam/feature/scale_levels.h"
+#include "segslam/feature/static_mask.h"
 
 namespace segslam::feature {
 
@@ -83,6 +84,7 @@ class OrbExtractor {
   std::vector<int> level_shares_;
   std::vector<cv::Mat> pyramid_;
   std::vector<cv::Mat> smoothed_;  // per level, so that levels can run in parallel
+  StaticMask static_mask_;         // the last frame's, its buffers reused
 };
 
 }  // namespace segslam::feature

@@ -50,19 +50,24 @@ cv::Mat dilateDynamicMask(const cv::Mat& dynamic_mask, int radius) {
   return dilated;
 }
 
-StaticMask::StaticMask(const cv::Mat& dynamic_mask, int radius) : radius_(radius) {
+StaticMask::StaticMask(const cv::Mat& dynamic_mask, int radius) { assign(dynamic_mask, radius); }
+
+void StaticMask::assign(const cv::Mat& dynamic_mask, int radius) {
   if (radius < 0) {
     throw std::invalid_argument("StaticMask: dilation radius must be >= 0, got " +
                                 std::to_string(radius));
   }
-  if (dynamic_mask.empty()) return;
-  if (dynamic_mask.type() != CV_8UC1) {
+  if (!dynamic_mask.empty() && dynamic_mask.type() != CV_8UC1) {
     throw std::invalid_argument("StaticMask: dynamic mask must be CV_8UC1");
   }
-  cv::Mat dynamic01;
-  cv::threshold(dynamic_mask, dynamic01, 0, 1, cv::THRESH_BINARY);
-  cv::integral(dynamic01, integral_, CV_32S);
-  half_widths_ = discHalfWidths(radius);
+  if (radius != radius_ || half_widths_.empty()) {
+    half_widths_ = discHalfWidths(radius);
+    radius_ = radius;
+  }
+  everything_static_ = dynamic_mask.empty();
+  if (everything_static_) return;
+  cv::threshold(dynamic_mask, binary_, 0, 1, cv::THRESH_BINARY);
+  cv::integral(binary_, integral_, CV_32S);
 }
 
 int StaticMask::dynamicPixels(cv::Rect rect) const {

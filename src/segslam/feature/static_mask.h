@@ -28,8 +28,12 @@ class StaticMask {
   StaticMask() = default;
   // dynamic_mask: CV_8UC1, non-zero = dynamic; empty = everything static. radius >= 0.
   StaticMask(const cv::Mat& dynamic_mask, int radius);
+  // Makes this the mask of another frame in the buffers of the last one: a fresh 1.2 MB integral
+  // image every frame was the tracking thread's most frequent page fault (glibc hands a freed
+  // block at a heap's top back to the system: ~100 faults a frame on the walker at camera rate).
+  void assign(const cv::Mat& dynamic_mask, int radius);
 
-  [[nodiscard]] bool everythingStatic() const { return integral_.empty(); }
+  [[nodiscard]] bool everythingStatic() const { return everything_static_; }
   [[nodiscard]] int radius() const { return radius_; }
   // Whether the level-0 pixel is farther than radius from every dynamic pixel.
   [[nodiscard]] bool isStatic(cv::Point pixel) const;
@@ -43,6 +47,8 @@ class StaticMask {
   [[nodiscard]] int dynamicPixels(cv::Rect rect) const;
 
   int radius_ = 0;
+  bool everything_static_ = true;
+  cv::Mat binary_;    // the mask as 0 / 1
   cv::Mat integral_;  // (rows + 1) x (cols + 1) CV_32S counts of dynamic pixels
   // half_widths_[dy + radius]: the disc of `radius` spans |dx| <= half_widths_ on row dy.
   std::vector<int> half_widths_;

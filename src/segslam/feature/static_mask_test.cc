@@ -4,6 +4,8 @@
 
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace segslam::feature {
 namespace {
@@ -73,6 +75,29 @@ TEST(FeatureStaticMask, DilationAroundTheObjectsEqualsDilatingTheWholeFrame) {
   EXPECT_TRUE(dilateDynamicMask(cv::Mat(), 3).empty());
   EXPECT_THROW(dilateDynamicMask(cv::Mat(10, 10, CV_16UC1, cv::Scalar(1)), 3),
                std::invalid_argument);
+}
+
+// One StaticMask serves frame after frame (the extractor's): each assign answers as a fresh mask
+// of that frame would, an empty mask included.
+TEST(FeatureStaticMask, AssignedFrameAfterFrameAnswersAsAFreshMask) {
+  cv::Mat first(60, 80, CV_8UC1, cv::Scalar(0));
+  cv::circle(first, {20, 20}, 5, cv::Scalar(255), cv::FILLED);
+  cv::Mat second(60, 80, CV_8UC1, cv::Scalar(0));
+  cv::rectangle(second, cv::Rect(50, 30, 10, 12), cv::Scalar(7), cv::FILLED);
+  StaticMask reused;
+  for (const auto& [mask, radius] :
+       std::vector<std::pair<cv::Mat, int>>{{first, 4}, {second, 4}, {cv::Mat(), 4}, {first, 2}}) {
+    reused.assign(mask, radius);
+    const StaticMask fresh(mask, radius);
+    EXPECT_EQ(reused.everythingStatic(), fresh.everythingStatic());
+    EXPECT_EQ(reused.radius(), radius);
+    int mismatches = 0;
+    for (int y = 0; y < first.rows; ++y) {
+      for (int x = 0; x < first.cols; ++x)
+        mismatches += reused.isStatic({x, y}) != fresh.isStatic({x, y});
+    }
+    EXPECT_EQ(mismatches, 0) << "radius " << radius;
+  }
 }
 
 TEST(FeatureStaticMask, RejectsBadInput) {

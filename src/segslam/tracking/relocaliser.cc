@@ -49,7 +49,8 @@ std::optional<PnpResult> solvePnp(const map::Frame& frame,
 }  // namespace
 
 std::optional<geometry::Pose> relocaliseAgainstKeyFrames(
-    map::Frame& frame, const std::vector<std::shared_ptr<map::KeyFrame>>& candidates) {
+    map::Frame& frame, const std::vector<std::shared_ptr<map::KeyFrame>>& candidates,
+    const RelocalisationCheck& accept) {
   for (const auto& keyframe : candidates) {
     std::fill(frame.map_points.begin(), frame.map_points.end(), nullptr);
     if (searchByDescriptors(frame, *keyframe, 0.75) < kMinMatches) continue;
@@ -65,7 +66,7 @@ std::optional<geometry::Pose> relocaliseAgainstKeyFrames(
       if (!keep[m]) frame.map_points[matched[m]].reset();
     }
     frame.reference_keyframe = keyframe;
-    return pnp->T_cw;
+    if (accept(pnp->T_cw)) return pnp->T_cw;
   }
   std::fill(frame.map_points.begin(), frame.map_points.end(), nullptr);
   return std::nullopt;

@@ -197,9 +197,19 @@ bool Tracker::trackReferenceKeyFrame() {
 
 bool Tracker::relocalise() {
   std::fill(current_.map_points.begin(), current_.map_points.end(), nullptr);
-  const auto pose = relocaliseAgainstKeyFrames(current_, relocalisationCandidates());
-  if (!pose) return false;
-  current_.T_cw = *pose;
+  const auto placed =
+      relocaliseAgainstKeyFrames(current_, relocalisationCandidates(),
+                                 [this](const geometry::Pose& T_cw) { return placedOn(T_cw); });
+  if (!placed) return false;
+  last_relocalisation_frame_id_ = current_.id;
+  reference_keyframe_ = current_.reference_keyframe;
+  spdlog::debug("frame {}: placed against keyframe {}", current_.id,
+                current_.reference_keyframe->id);
+  return true;
+}
+
+bool Tracker::placedOn(const geometry::Pose& T_cw) {
+  current_.T_cw = T_cw;
   // The candidate keyframe's own points need only place the frame: the local map around it,
   // searched next (trackLocalMap), must then bring the inliers up to
   // min_inliers_after_relocalisation. One keyframe seldom shows that many through a person or
@@ -208,15 +218,11 @@ bool Tracker::relocalise() {
   const int checked = checkedMatches();
   if (checked < options_.min_checked_relocalisation_inliers) {
     spdlog::debug(
-        "frame {}: relocalisation against keyframe {} refused: {} of its inliers on "
-        "points no own mask has checked",
+        "frame {}: relocalisation against keyframe {} refused: only {} of its inliers on "
+        "points an own mask has checked",
         current_.id, current_.reference_keyframe->id, checked);
     return false;
   }
-  last_relocalisation_frame_id_ = current_.id;
-  reference_keyframe_ = current_.reference_keyframe;
-  spdlog::debug("frame {}: placed against keyframe {}", current_.id,
-                current_.reference_keyframe->id);
   return true;
 }
 

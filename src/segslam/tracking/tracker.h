@@ -107,6 +107,9 @@ class Tracker {
   bool trackWithMotionModel();
   bool trackReferenceKeyFrame();
   bool relocalise();
+  // Whether a relocalisation candidate's pose places the current frame: refined, with enough
+  // inliers, enough of them on points an own mask has checked.
+  bool placedOn(const geometry::Pose& T_cw);
   [[nodiscard]] std::vector<std::shared_ptr<map::KeyFrame>> relocalisationCandidates() const;
   bool trackLocalMap();
   [[nodiscard]] bool movedPlausibly() const;
