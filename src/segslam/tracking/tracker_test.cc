@@ -3,11 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <mutex>
-#include <opencv2/imgproc.hpp>
 
 #include "segslam/feature/orb_extractor.h"
 #include "segslam/synth/sequence.h"
 #include "segslam/testing/synth_sequences.h"
+#include "segslam/testing/tracking_frames.h"
 
 namespace segslam::tracking {
 namespace {
@@ -31,16 +31,7 @@ class TrackerOnARoomLap : public ::testing::Test {
   TrackerOnARoomLap() : sequence_(testing::noisyRoomLap(300)) {}
 
   map::Frame frameAt(int index) {
-    const synth::FrameImages images = sequence_.renderFrame(index);
-    cv::Mat gray;
-    cv::cvtColor(images.rgb, gray, cv::COLOR_BGR2GRAY);
-    cv::Mat depth_m;
-    images.depth.convertTo(depth_m, CV_32F, 1.0 / sequence_.camera().depth_factor);
-    std::vector<cv::KeyPoint> keypoints;
-    cv::Mat descriptors;
-    extractor_.extract(gray, cv::Mat(), keypoints, descriptors);
-    return map::Frame(static_cast<std::uint64_t>(index), sequence_.timestamp(index),
-                      std::move(keypoints), descriptors, depth_m, cv::Mat(), camera_);
+    return testing::trackingFrame(sequence_, index, extractor_, camera_);
   }
 
   TrackingResult track(Tracker& tracker, int index) {
