@@ -17,10 +17,10 @@ using RelocalisationCheck = std::function<bool(const geometry::Pose& T_cw)>;
 // Finds the pose of a frame that lost track: descriptor matching against the candidate keyframes
 // in the order given, then PnP with RANSAC on the matched map points, until a pose passes
 // `accept`. A pose the caller refuses (e.g. on points no own mask has checked: the newest
-// keyframe's, made while a person walked in) does not end the search: an older candidate may
-// place the frame on checked points (people soak, network 10 frames late: 16 frames lost when
-// the search stopped at the first PnP pose). Returns the accepted pose (frame.map_points and
-// frame.reference_keyframe as `accept` left them), or none with the frame's map_points cleared.
+// keyframe's, made while a person walked in) does not end the search, since an older candidate
+// may place the frame on checked points. Returns the accepted candidate's PnP pose (the frame's
+// map_points and reference_keyframe as `accept` left them), or none with the frame's map_points
+// cleared.
 std::optional<geometry::Pose> relocaliseAgainstKeyFrames(
     map::Frame& frame, const std::vector<std::shared_ptr<map::KeyFrame>>& candidates,
     const RelocalisationCheck& accept);
