@@ -180,7 +180,9 @@ bool Tracker::trackWithMotionModel() {
     matches = searchFromLastFrame(current_, last_, 2.0 * kMotionSearchRadius);
   }
   if (matches < 20) return false;
-  return optimiseCurrentPose() >= kMinPoseMatches;
+  const int inliers = optimiseCurrentPose();
+  spdlog::debug("frame {}: motion model: {} matches, {} inliers", current_.id, matches, inliers);
+  return inliers >= kMinPoseMatches;
 }
 
 bool Tracker::trackReferenceKeyFrame() {
@@ -292,6 +294,9 @@ bool Tracker::trackLocalMap() {
       current_.id < last_relocalisation_frame_id_ + options_.keyframes.max_frames_between_keyframes;
   const int needed =
       recently_relocalised ? options_.min_inliers_after_relocalisation : options_.min_inliers;
+  if (inliers_ < needed) {
+    spdlog::debug("frame {}: local map: {} inliers, {} needed", current_.id, inliers_, needed);
+  }
   return inliers_ >= needed;
 }
 
