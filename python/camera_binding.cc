@@ -12,8 +12,9 @@ namespace {
 
 core::Camera makeCamera(int width, int height, double fx, double fy, double cx, double cy,
                         const std::array<double, 5>& distortion, double depth_factor, double fps,
-                        const std::string& name) {
-  const core::Camera camera{name, width, height, fx, fy, cx, cy, distortion, depth_factor, fps};
+                        const std::string& name, double rolling_shutter_readout) {
+  const core::Camera camera{
+      name, width, height, fx, fy, cx, cy, distortion, depth_factor, fps, rolling_shutter_readout};
   io::validateCamera(camera, "Camera");
   return camera;
 }
@@ -35,9 +36,9 @@ py::array_t<double> intrinsicMatrix(const core::Camera& camera) {
 std::string describe(const core::Camera& camera) {
   return fmt::format(
       "Camera(name='{}', width={}, height={}, fx={}, fy={}, cx={}, cy={}, depth_factor={}, "
-      "fps={})",
+      "fps={}, rolling_shutter_readout={})",
       camera.name, camera.width, camera.height, camera.fx, camera.fy, camera.cx, camera.cy,
-      camera.depth_factor, camera.fps);
+      camera.depth_factor, camera.fps, camera.rolling_shutter_readout_s);
 }
 
 }  // namespace
@@ -51,9 +52,10 @@ void bindCamera(py::module_& module) {
            py::arg("cx"), py::arg("cy"), py::arg("distortion") = defaults.distortion,
            py::arg("depth_factor") = defaults.depth_factor, py::arg("fps") = defaults.fps,
            py::arg("name") = defaults.name,
+           py::arg("rolling_shutter_readout") = defaults.rolling_shutter_readout_s,
            "A camera from its intrinsics. ValueError when a value is impossible.")
       .def_static("preset", &io::requireCameraPreset, py::arg("name"),
-                  "A TUM RGB-D preset: 'freiburg1', 'freiburg2' or 'freiburg3'.")
+                  "A preset: 'freiburg1', 'freiburg2', 'freiburg3' (TUM RGB-D) or 'bonn'.")
       .def_static("presets", &io::cameraPresetNames, "The preset names.")
       .def_static("from_yaml", &io::readCameraYaml, py::arg("path"),
                   "Reads camera settings YAML (the format of `segslam run --camera`).")
@@ -73,6 +75,8 @@ void bindCamera(py::module_& module) {
       .def_readonly("distortion", &core::Camera::distortion, "(k1, k2, p1, p2, k3)")
       .def_readonly("depth_factor", &core::Camera::depth_factor, "Raw depth units per metre.")
       .def_readonly("fps", &core::Camera::fps)
+      .def_readonly("rolling_shutter_readout", &core::Camera::rolling_shutter_readout_s,
+                    "Seconds from the first row's exposure to the last's; 0: global shutter.")
       .def_property_readonly("intrinsics", &intrinsicMatrix, "The 3x3 matrix K (float64).")
       .def("__repr__", &describe);
 }

@@ -19,6 +19,10 @@ struct Camera {
   std::array<double, 5> distortion{0.0, 0.0, 0.0, 0.0, 0.0};
   double depth_factor = 5000.0;
   double fps = 30.0;
+  // Seconds from the first image row's exposure to the last's (rolling shutter); 0 for a global
+  // shutter. A moving camera sees each row at another moment: tracking moves keypoints to the
+  // middle row's moment before it uses them (map::Frame::compensateRollingShutter).
+  double rolling_shutter_readout_s = 0.0;
 
   [[nodiscard]] bool hasDistortion() const;
   // Pixel (u, v) at depth z (metres) to a camera-frame point, ignoring distortion.

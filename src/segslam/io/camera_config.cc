@@ -20,6 +20,11 @@ namespace segslam::io {
 
 namespace {
 
+// The colour cameras of TUM's Kinects and of Bonn's ASUS Xtion read their rows over ~20 ms of the
+// 33 ms frame: the readout that gave the lowest ATE on tum_fr1_xyz_300 and rgbd_bonn_crowd_300
+// (bench/results/rolling_shutter.md).
+constexpr double kStructuredLightCameraReadoutS = 0.02;
+
 core::Camera makeTumCamera(const std::string& name, double fx, double fy, double cx, double cy,
                            std::array<double, 5> distortion, double depth_factor) {
   core::Camera camera;
@@ -33,6 +38,7 @@ core::Camera makeTumCamera(const std::string& name, double fx, double fy, double
   camera.distortion = distortion;
   camera.depth_factor = depth_factor;
   camera.fps = 30.0;
+  camera.rolling_shutter_readout_s = kStructuredLightCameraReadoutS;
   return camera;
 }
 
@@ -59,9 +65,9 @@ std::array<double, 5> readDistortion(const YAML::Node& node, const std::filesyst
 }
 
 void rejectUnknownKeys(const YAML::Node& camera_node, const std::filesystem::path& file) {
-  static constexpr std::array<std::string_view, 11> kKeys = {
-      "preset", "name", "width",      "height",       "fx", "fy",
-      "cx",     "cy",   "distortion", "depth_factor", "fps"};
+  static constexpr std::array<std::string_view, 12> kKeys = {
+      "preset", "name", "width",      "height",       "fx",  "fy",
+      "cx",     "cy",   "distortion", "depth_factor", "fps", "rolling_shutter_readout"};
   util::rejectUnknownYamlKeys(camera_node, kKeys, "camera.", file);
 }
 
@@ -154,6 +160,7 @@ core::Camera parseCameraYaml(std::string_view text, const std::filesystem::path&
   readOptional(node, "cy", file, camera.cy);
   readOptional(node, "depth_factor", file, camera.depth_factor);
   readOptional(node, "fps", file, camera.fps);
+  readOptional(node, "rolling_shutter_readout", file, camera.rolling_shutter_readout_s);
   if (node["distortion"]) camera.distortion = readDistortion(node["distortion"], file);
   validateCamera(camera, file);
   return camera;
@@ -197,11 +204,14 @@ void writeCameraYaml(const std::filesystem::path& file, const core::Camera& came
   out << YAML::EndSeq;
   out << YAML::Key << "depth_factor" << YAML::Value << camera.depth_factor;
   out << YAML::Key << "fps" << YAML::Value << camera.fps;
+  out << YAML::Key << "rolling_shutter_readout" << YAML::Value << camera.rolling_shutter_readout_s;
   out << YAML::EndMap << YAML::EndMap;
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   std::ofstream stream(file);
-  stream << "# segslam camera settings (pinhole + k1 k2 p1 p2 k3; metres = depth / depth_factor)\n"
-         << out.c_str() << "\n";
+  stream
+      << "# segslam camera settings (pinhole + k1 k2 p1 p2 k3; metres = depth / depth_factor;\n"
+      << "# rolling_shutter_readout: seconds from the first row to the last, 0 = global shutter)\n"
+      << out.c_str() << "\n";
   if (!stream) util::failAt(file, "cannot write");
 }
 
@@ -213,6 +223,10 @@ void validateCamera(const core::Camera& camera, const std::filesystem::path& sou
   if (!std::isfinite(camera.cx) || !std::isfinite(camera.cy)) fail("cx and cy must be finite");
   if (!positive(camera.depth_factor)) fail("depth_factor must be positive and finite");
   if (!positive(camera.fps)) fail("fps must be positive and finite");
+  if (!(camera.rolling_shutter_readout_s >= 0.0 &&
+        camera.rolling_shutter_readout_s <= 1.0 / camera.fps)) {
+    fail("rolling_shutter_readout must be between 0 and one frame period (1 / fps) seconds");
+  }
   for (double d : camera.distortion) {
     if (!std::isfinite(d)) fail("distortion must be finite");
   }

@@ -33,6 +33,8 @@ std::optional<std::string> presetNameForDataset(const std::filesystem::path& dat
 //     distortion: [k1, k2, p1, p2, k3]   # optional, default zeros
 //     depth_factor: 5000                 # raw depth units per metre
 //     fps: 30
+//     rolling_shutter_readout: 0.02      # optional, seconds from the first row to the last;
+//                                        # 0 (the default without a preset) = global shutter
 // Throws util::Error naming the file (and line) on malformed YAML, missing or unknown keys, wrong
 // types or impossible values.
 core::Camera readCameraYaml(const std::filesystem::path& file);

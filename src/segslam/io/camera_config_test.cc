@@ -40,6 +40,11 @@ TEST(CameraConfig, PresetsHaveThePublishedCalibration) {
   EXPECT_DOUBLE_EQ(bonn->distortion[3], -0.000144);
   EXPECT_DOUBLE_EQ(bonn->depth_factor, 5000.0);
   EXPECT_DOUBLE_EQ(requireCameraPreset("freiburg3").fy, 539.2);
+  // The structured-light cameras' rolling shutter (bench/results/rolling_shutter.md).
+  for (const auto& name : cameraPresetNames()) {
+    EXPECT_DOUBLE_EQ(requireCameraPreset(name).rolling_shutter_readout_s, 0.02) << name;
+  }
+  EXPECT_DOUBLE_EQ(core::Camera{}.rolling_shutter_readout_s, 0.0);
   EXPECT_EQ(errorMessage([] { (void)requireCameraPreset("fr1"); }),
             "unknown camera preset 'fr1' (known: freiburg1, freiburg2, freiburg3, bonn)");
 }
@@ -73,6 +78,7 @@ TEST(CameraConfig, YamlRoundTrip) {
   camera.distortion = {0.1, -0.2, 0.001, -0.002, 0.3};
   camera.depth_factor = 1000.0;
   camera.fps = 15.0;
+  camera.rolling_shutter_readout_s = 0.031;
   const auto file = temp.path() / "nested" / "camera.yaml";
   writeCameraYaml(file, camera);
   const core::Camera read = readCameraYaml(file);
@@ -86,6 +92,7 @@ TEST(CameraConfig, YamlRoundTrip) {
   EXPECT_EQ(read.distortion, camera.distortion);
   EXPECT_DOUBLE_EQ(read.depth_factor, camera.depth_factor);
   EXPECT_DOUBLE_EQ(read.fps, camera.fps);
+  EXPECT_DOUBLE_EQ(read.rolling_shutter_readout_s, camera.rolling_shutter_readout_s);
 }
 
 TEST(CameraConfig, PresetWithOverrides) {
@@ -96,6 +103,11 @@ TEST(CameraConfig, PresetWithOverrides) {
   EXPECT_DOUBLE_EQ(camera.fy, 516.469215);
   EXPECT_DOUBLE_EQ(camera.fps, 15.0);
   EXPECT_DOUBLE_EQ(camera.distortion[0], 0.262383);
+  EXPECT_DOUBLE_EQ(camera.rolling_shutter_readout_s, 0.02);
+  EXPECT_DOUBLE_EQ(
+      parseCameraYaml("camera:\n  preset: bonn\n  rolling_shutter_readout: 0\n", "c.yaml")
+          .rolling_shutter_readout_s,
+      0.0);
 }
 
 TEST(CameraConfig, FullDefinitionWithoutPreset) {
@@ -149,6 +161,13 @@ TEST(CameraConfig, ImpossibleValuesAreRejected) {
             "d/camera.yaml: camera.width and height must be positive");
   EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  cy: .nan\n"),
             "d/camera.yaml: camera.cx and cy must be finite");
+  for (const char* readout : {"-0.01", "0.04", ".nan"}) {
+    EXPECT_EQ(yamlError(std::string("camera:\n  preset: freiburg1\n  rolling_shutter_readout: ") +
+                        readout + "\n"),
+              "d/camera.yaml: camera.rolling_shutter_readout must be between 0 and one frame "
+              "period (1 / fps) seconds")
+        << readout;
+  }
 }
 
 TEST(CameraConfig, DistortionMustBeFiveNumbers) {
@@ -163,7 +182,7 @@ TEST(CameraConfig, DistortionMustBeFiveNumbers) {
 TEST(CameraConfig, UnknownKeysAndPresetsAreRejected) {
   EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  fxx: 500\n"),
             "d/camera.yaml:3: camera.fxx is not a known key (known: preset, name, width, height, "
-            "fx, fy, cx, cy, distortion, depth_factor, fps)");
+            "fx, fy, cx, cy, distortion, depth_factor, fps, rolling_shutter_readout)");
   EXPECT_EQ(yamlError("camera:\n  preset: kinect\n"),
             "d/camera.yaml:2: unknown camera preset 'kinect' (known: freiburg1, freiburg2, "
             "freiburg3, bonn)");

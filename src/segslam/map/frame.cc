@@ -132,6 +132,41 @@ optim::RgbdObservation Frame::observation(std::size_t i) const {
   return {{kp.pt.x, kp.pt.y}, right_u[i], camera->levels.inverseSigma2()[kp.octave]};
 }
 
+void Frame::compensateRollingShutter(const geometry::Pose& motion, double motion_dt) {
+  const core::Camera& cam = camera->camera;
+  if (cam.rolling_shutter_readout_s <= 0.0 || motion_dt <= 0.0) return;
+  if (read_points_.empty()) {
+    read_points_.reserve(keypoints_un.size());
+    for (const auto& kp : keypoints_un) read_points_.push_back(kp.pt);
+    read_depth_ = depth;
+  }
+  // The motion over a fraction of a frame is small: first order in its rotation is exact to
+  // well below a pixel.
+  const Eigen::AngleAxisd rotation(motion.rotation());
+  const Eigen::Vector3d rotation_rate = rotation.angle() * rotation.axis() / motion_dt;
+  const Eigen::Vector3d translation_rate = motion.translation() / motion_dt;
+  const double seconds_per_row = cam.rolling_shutter_readout_s / cam.height;
+  const double middle_row = 0.5 * cam.height;
+  for (std::size_t i = 0; i < keypoints.size(); ++i) {
+    // The sensor's row is the raw (distorted) one.
+    const double dt = (keypoints[i].pt.y - middle_row) * seconds_per_row;
+    const cv::Point2f& read = read_points_[i];
+    const bool has_depth = read_depth_[i] > 0.0f;
+    // Without depth the point is taken as far away: only the rotation moves it.
+    const Eigen::Vector3d seen = cam.backProject(read.x, read.y, has_depth ? read_depth_[i] : 1.0);
+    const Eigen::Vector3d shift =
+        has_depth ? Eigen::Vector3d(translation_rate * dt) : Eigen::Vector3d::Zero();
+    const Eigen::Vector3d moved = seen - (rotation_rate * dt).cross(seen) - shift;
+    if (moved.z() <= 0.0) continue;
+    const Eigen::Vector2d uv = cam.project(moved);
+    keypoints_un[i].pt = cv::Point2f(static_cast<float>(uv.x()), static_cast<float>(uv.y()));
+    if (!has_depth) continue;
+    depth[i] = static_cast<float>(moved.z());
+    right_u[i] = keypoints_un[i].pt.x - static_cast<float>(camera->stereo.bf / depth[i]);
+  }
+  grid = KeypointGrid(keypoints_un, camera->undistorted_bounds);
+}
+
 Eigen::Vector3d Frame::unproject(std::size_t i) const {
   return camera->camera.backProject(keypoints_un[i].pt.x, keypoints_un[i].pt.y, depth[i]);
 }

@@ -83,6 +83,12 @@ class Frame {
   // True when the undistorted pixel lies in a dynamic area of this frame.
   [[nodiscard]] bool isDynamicAt(double u, double v) const;
   [[nodiscard]] Eigen::Vector3d cameraCentre() const { return T_cw.inverse().translation(); }
+  // A rolling-shutter camera reads each row at another moment: moves every undistorted keypoint,
+  // and its depth, to where the camera saw it at the middle row's moment, the one its pose is
+  // for. `motion` maps camera coordinates at one moment to those `motion_dt` seconds later (the
+  // camera's motion between two frames). Each call starts again from the keypoints as read, so a
+  // better motion estimate can replace a first one. Does nothing for a global-shutter camera.
+  void compensateRollingShutter(const geometry::Pose& motion, double motion_dt);
 
   std::uint64_t id = 0;
   double timestamp = 0.0;
@@ -105,6 +111,11 @@ class Frame {
   geometry::Pose T_cw = geometry::Pose::Identity();  // world-to-camera
   bool has_pose = false;
   std::shared_ptr<KeyFrame> reference_keyframe;
+
+ private:
+  // Undistorted keypoints and their depth as the sensor read them, kept once compensated.
+  std::vector<cv::Point2f> read_points_;
+  std::vector<float> read_depth_;
 };
 
 }  // namespace segslam::map

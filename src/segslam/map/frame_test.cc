@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <tuple>
 
@@ -46,6 +47,90 @@ TEST(Frame, RightCoordinateIsTheDisparityOfTheBaselineAtTheKeypointDepth) {
                     camera);
   EXPECT_FLOAT_EQ(frame.depth[0], 2.0f);
   EXPECT_NEAR(frame.right_u[0], 100.0 - 262.5 * kBaseline / 2.0, 1e-4);
+}
+
+// A camera turning and sliding while its rows are read top to bottom: each keypoint is where the
+// camera at its row's moment saw a static point. Compensated, every keypoint (and its depth) is
+// where the camera at the middle row's moment sees that point.
+TEST(Frame, RollingShutterCompensationMovesKeypointsToTheMiddleRowsMoment) {
+  FrameCamera frame_camera = cameraOfWidth(640);
+  frame_camera.camera.rolling_shutter_readout_s = 0.03;
+  const auto camera = std::make_shared<const FrameCamera>(frame_camera);
+  const core::Camera& cam = camera->camera;
+  // Per frame period of 1/30 s: 1.5 deg about y and 0.5 deg about x, 2 cm sideways.
+  const double frame_dt = 1.0 / 30.0;
+  geometry::Pose motion = geometry::Pose::Identity();
+  motion.linear() = (Eigen::AngleAxisd(0.026, Eigen::Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(0.009, Eigen::Vector3d::UnitX()))
+                        .toRotationMatrix();
+  motion.translation() = Eigen::Vector3d(0.02, 0.0, 0.005);
+  const Eigen::AngleAxisd rotation(motion.linear());
+  auto cameraAt = [&](double dt) {  // middle-row camera coordinates -> those dt seconds later
+    geometry::Pose moved = geometry::Pose::Identity();
+    moved.linear() =
+        Eigen::AngleAxisd(rotation.angle() * dt / frame_dt, rotation.axis()).toRotationMatrix();
+    moved.translation() = motion.translation() * dt / frame_dt;
+    return moved;
+  };
+  std::vector<Eigen::Vector3d> points;
+  std::vector<cv::KeyPoint> keypoints;
+  cv::Mat depth(cam.height, cam.width, CV_32F, cv::Scalar(0.0f));
+  for (int i = 0; i < 40; ++i) {
+    // Every other keypoint has no depth: only the rotation moves it, as for a far point.
+    const bool has_depth = i % 2 == 0;
+    const Eigen::Vector3d point =
+        cam.backProject(40.0 + 14.0 * i, 20.0 + 11.0 * i, has_depth ? 1.0 + 0.05 * i : 40.0);
+    // Where the camera saw the point: iterate on the row, whose moment depends on where it is.
+    Eigen::Vector2d uv = cam.project(point);
+    Eigen::Vector3d seen = point;
+    for (int k = 0; k < 5; ++k) {
+      seen = cameraAt((uv.y() - 240.0) / 480.0 * 0.03) * point;
+      uv = cam.project(seen);
+    }
+    points.push_back(point);
+    keypoints.emplace_back(static_cast<float>(uv.x()), static_cast<float>(uv.y()), 31.0f);
+    if (has_depth) {
+      depth.at<float>(static_cast<int>(std::lround(uv.y())),
+                      static_cast<int>(std::lround(uv.x()))) = static_cast<float>(seen.z());
+    }
+  }
+  Frame frame(0, 0.0, keypoints, cv::Mat(40, 32, CV_8U, cv::Scalar(0)), depth, cv::Mat(), camera);
+  const Frame as_read = frame;
+  // A first, wrong motion, then the right one: each call starts from the keypoints as read.
+  frame.compensateRollingShutter(motion.inverse(), frame_dt);
+  frame.compensateRollingShutter(motion, frame_dt);
+  double largest_before = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector2d truth = cam.project(points[i]);
+    const cv::Point2f& pt = frame.keypoints_un[i].pt;
+    const bool has_depth = i % 2 == 0;
+    // First order in the rotation is left (and, without depth, the far point's slide).
+    EXPECT_NEAR(pt.x, truth.x(), has_depth ? 0.05 : 0.2) << i;
+    EXPECT_NEAR(pt.y, truth.y(), has_depth ? 0.05 : 0.2) << i;
+    if (has_depth) {
+      EXPECT_NEAR(frame.depth[i], points[i].z(), 1e-3) << i;
+      EXPECT_NEAR(frame.right_u[i], pt.x - camera->stereo.bf / frame.depth[i], 1e-3) << i;
+    }
+    largest_before = std::max(largest_before, std::hypot(as_read.keypoints_un[i].pt.x - truth.x(),
+                                                         as_read.keypoints_un[i].pt.y - truth.y()));
+  }
+  EXPECT_GT(largest_before, 3.0) << "the test's motion must move rows by pixels";
+  EXPECT_FALSE(frame.grid
+                   .featuresInArea(frame.keypoints_un, cam.project(points[7]).x(),
+                                   cam.project(points[7]).y(), 0.5)
+                   .empty());
+}
+
+TEST(Frame, GlobalShutterKeypointsStayWhereTheyWereRead) {
+  const auto camera = std::make_shared<const FrameCamera>(cameraOfWidth(640));
+  cv::Mat depth(480, 640, CV_32F, cv::Scalar(2.0f));
+  Frame frame(0, 0.0, {cv::KeyPoint(100.0f, 50.0f, 31.0f)}, cv::Mat(1, 32, CV_8U, cv::Scalar(0)),
+              depth, cv::Mat(), camera);
+  geometry::Pose motion = geometry::Pose::Identity();
+  motion.translation() = Eigen::Vector3d(0.1, 0.0, 0.0);
+  frame.compensateRollingShutter(motion, 1.0 / 30.0);
+  EXPECT_EQ(frame.keypoints_un[0].pt, cv::Point2f(100.0f, 50.0f));
+  EXPECT_FLOAT_EQ(frame.depth[0], 2.0f);
 }
 
 TEST(KeypointGrid, FindsWhatABruteForceSearchFinds) {

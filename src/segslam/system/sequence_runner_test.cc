@@ -254,20 +254,23 @@ TEST(SequenceRunner, RealStaticSequence) {
   const ScopedTempDir dir;
   const auto summary = runDeterministic(dataset, MaskSource::kNone, dir.path(), 150);
   EXPECT_EQ(summary.lost_frames, 0u);
-  EXPECT_LT(ateRmse(summary), 0.02);
+  // 0.0050 m; 0.0100 m without the rolling-shutter compensation of the freiburg1 preset's camera.
+  EXPECT_LT(ateRmse(summary), 0.0075);
 }
 
 TEST(SequenceRunner, RealSequenceWithACompositedWalkerAndOracleMasks) {
   SEGSLAM_REQUIRE_SHARED(dataset, "tum_fr1_xyz_300_walker");
   const ScopedTempDir dir;
-  // The walker enters the view in the first 150 frames and drags unmasked tracking far off. Loop
-  // closing is off for that run: a loop back to the first keyframes hides the drift (0.028 m).
-  const auto masked = runDeterministic(dataset, MaskSource::kOracle, dir.path() / "masked", 150);
+  // The walker is in the view from frame ~100 and drags unmasked tracking far off by frame 200
+  // (over the first 150 frames, rows placed at their own moments keep even unmasked tracking
+  // within 0.008 m). Loop closing is off for that run: a loop back to the first keyframes hides
+  // the drift.
+  const auto masked = runDeterministic(dataset, MaskSource::kOracle, dir.path() / "masked", 200);
   EXPECT_EQ(masked.lost_frames, 0u);
-  EXPECT_LT(ateRmse(masked), 0.02);
+  EXPECT_LT(ateRmse(masked), 0.01);  // 0.0049 m
   const auto unmasked =
-      runDeterministic(dataset, MaskSource::kNone, dir.path() / "unmasked", 150, false);
-  EXPECT_GT(ateRmse(unmasked), 0.05);
+      runDeterministic(dataset, MaskSource::kNone, dir.path() / "unmasked", 200, false);
+  EXPECT_GT(ateRmse(unmasked), 0.05);  // 0.118 m
 }
 
 TEST(SequenceRunner, RealWalkerWithSemanticMasksFromTheNetwork) {

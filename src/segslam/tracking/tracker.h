@@ -116,6 +116,7 @@ class Tracker {
   [[nodiscard]] int checkedMatches() const;
   void addVisualOdometryPoints();
   int optimiseCurrentPose();
+  void refineForRollingShutter();
 
   void updateLocalKeyFrames();
   void updateLocalPoints();
@@ -138,6 +139,7 @@ class Tracker {
   map::Frame current_;
   map::Frame last_;
   std::optional<geometry::Pose> velocity_;
+  double velocity_dt_ = 0.0;  // seconds between the two frames velocity_ was measured on
   std::shared_ptr<map::KeyFrame> reference_keyframe_;
   std::shared_ptr<map::KeyFrame> last_keyframe_;
   std::uint64_t last_keyframe_frame_id_ = 0;
