@@ -34,11 +34,15 @@ sequences="$root/out/real_starts_sequences"
 mkdir -p "$sequences" "$out" "$root/bench/results"
 
 # The Bonn frames backwards from a frame with people in view; the folder keeps a Bonn name, so
-# that its marker ground truth is converted as the source's is.
+# that its marker ground truth is converted as the source's is, and gets the source's camera with
+# the rolling shutter's rows read the other way (`segslam check` writes the camera it resolves).
 make_reversed() {  # first frame
   local dir="$sequences/rgbd_bonn_crowd_rev$1"
-  [[ -f "$dir/rgb.txt" ]] && return
-  /usr/bin/python3 "$root/bench/reversed_sequence.py" "$bonn" "$dir" --from "$1" > /dev/null
+  [[ -f "$dir/camera.yaml" ]] && return
+  "$segslam" --log-level warn check --dataset "$bonn" --max-frames 1 --out "$sequences/bonn_check" \
+    > /dev/null 2>&1 || bench_fail "segslam check failed for $bonn"
+  /usr/bin/python3 "$root/bench/reversed_sequence.py" "$bonn" "$dir" --from "$1" \
+    --camera "$sequences/bonn_check/camera.yaml" > /dev/null
 }
 
 make_composite() {  # name options

@@ -20,8 +20,10 @@ struct Camera {
   double depth_factor = 5000.0;
   double fps = 30.0;
   // Seconds from the first image row's exposure to the last's (rolling shutter); 0 for a global
-  // shutter. A moving camera sees each row at another moment: tracking moves keypoints to the
-  // middle row's moment before it uses them (map::Frame::compensateRollingShutter).
+  // shutter; negative when the last row is read first (a sensor mounted upside down whose images
+  // are turned upright, or frames played backwards). A moving camera sees each row at another
+  // moment: tracking moves keypoints to the middle row's moment before it uses them
+  // (map::Frame::compensateRollingShutter).
   double rolling_shutter_readout_s = 0.0;
 
   [[nodiscard]] bool hasDistortion() const;

@@ -210,7 +210,8 @@ void writeCameraYaml(const std::filesystem::path& file, const core::Camera& came
   std::ofstream stream(file);
   stream
       << "# segslam camera settings (pinhole + k1 k2 p1 p2 k3; metres = depth / depth_factor;\n"
-      << "# rolling_shutter_readout: seconds from the first row to the last, 0 = global shutter)\n"
+      << "# rolling_shutter_readout: seconds from the first row to the last, 0 = global shutter,\n"
+      << "# negative = the last row read first)\n"
       << out.c_str() << "\n";
   if (!stream) util::failAt(file, "cannot write");
 }
@@ -223,9 +224,8 @@ void validateCamera(const core::Camera& camera, const std::filesystem::path& sou
   if (!std::isfinite(camera.cx) || !std::isfinite(camera.cy)) fail("cx and cy must be finite");
   if (!positive(camera.depth_factor)) fail("depth_factor must be positive and finite");
   if (!positive(camera.fps)) fail("fps must be positive and finite");
-  if (!(camera.rolling_shutter_readout_s >= 0.0 &&
-        camera.rolling_shutter_readout_s <= 1.0 / camera.fps)) {
-    fail("rolling_shutter_readout must be between 0 and one frame period (1 / fps) seconds");
+  if (!(std::abs(camera.rolling_shutter_readout_s) <= 1.0 / camera.fps)) {
+    fail("rolling_shutter_readout must be within one frame period (1 / fps) seconds of 0");
   }
   for (double d : camera.distortion) {
     if (!std::isfinite(d)) fail("distortion must be finite");

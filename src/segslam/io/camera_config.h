@@ -34,7 +34,8 @@ std::optional<std::string> presetNameForDataset(const std::filesystem::path& dat
 //     depth_factor: 5000                 # raw depth units per metre
 //     fps: 30
 //     rolling_shutter_readout: 0.02      # optional, seconds from the first row to the last;
-//                                        # 0 (the default without a preset) = global shutter
+//                                        # 0 (the default without a preset) = global shutter;
+//                                        # negative: the last row is read first
 // Throws util::Error naming the file (and line) on malformed YAML, missing or unknown keys, wrong
 // types or impossible values.
 core::Camera readCameraYaml(const std::filesystem::path& file);

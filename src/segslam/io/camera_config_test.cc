@@ -108,6 +108,11 @@ TEST(CameraConfig, PresetWithOverrides) {
       parseCameraYaml("camera:\n  preset: bonn\n  rolling_shutter_readout: 0\n", "c.yaml")
           .rolling_shutter_readout_s,
       0.0);
+  // Rows read from the last to the first: frames played backwards, a sensor mounted upside down.
+  EXPECT_DOUBLE_EQ(
+      parseCameraYaml("camera:\n  preset: bonn\n  rolling_shutter_readout: -0.02\n", "c.yaml")
+          .rolling_shutter_readout_s,
+      -0.02);
 }
 
 TEST(CameraConfig, FullDefinitionWithoutPreset) {
@@ -161,11 +166,11 @@ TEST(CameraConfig, ImpossibleValuesAreRejected) {
             "d/camera.yaml: camera.width and height must be positive");
   EXPECT_EQ(yamlError("camera:\n  preset: freiburg1\n  cy: .nan\n"),
             "d/camera.yaml: camera.cx and cy must be finite");
-  for (const char* readout : {"-0.01", "0.04", ".nan"}) {
+  for (const char* readout : {"-0.04", "0.04", ".nan"}) {
     EXPECT_EQ(yamlError(std::string("camera:\n  preset: freiburg1\n  rolling_shutter_readout: ") +
                         readout + "\n"),
-              "d/camera.yaml: camera.rolling_shutter_readout must be between 0 and one frame "
-              "period (1 / fps) seconds")
+              "d/camera.yaml: camera.rolling_shutter_readout must be within one frame period "
+              "(1 / fps) seconds of 0")
         << readout;
   }
 }

@@ -134,7 +134,7 @@ optim::RgbdObservation Frame::observation(std::size_t i) const {
 
 void Frame::compensateRollingShutter(const geometry::Pose& motion, double motion_dt) {
   const core::Camera& cam = camera->camera;
-  if (cam.rolling_shutter_readout_s <= 0.0 || motion_dt <= 0.0) return;
+  if (cam.rolling_shutter_readout_s == 0.0 || motion_dt <= 0.0) return;
   if (read_points_.empty()) {
     read_points_.reserve(keypoints_un.size());
     for (const auto& kp : keypoints_un) read_points_.push_back(kp.pt);

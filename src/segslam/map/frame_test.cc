@@ -49,12 +49,13 @@ TEST(Frame, RightCoordinateIsTheDisparityOfTheBaselineAtTheKeypointDepth) {
   EXPECT_NEAR(frame.right_u[0], 100.0 - 262.5 * kBaseline / 2.0, 1e-4);
 }
 
-// A camera turning and sliding while its rows are read top to bottom: each keypoint is where the
-// camera at its row's moment saw a static point. Compensated, every keypoint (and its depth) is
-// where the camera at the middle row's moment sees that point.
-TEST(Frame, RollingShutterCompensationMovesKeypointsToTheMiddleRowsMoment) {
+// A camera turning and sliding while its rows are read one after another (top to bottom for a
+// positive readout): each keypoint is where the camera at its row's moment saw a static point.
+// Compensated, every keypoint (and its depth) is where the camera at the middle row's moment sees
+// that point.
+void expectKeypointsAtTheMiddleRowsMoment(double readout_s) {
   FrameCamera frame_camera = cameraOfWidth(640);
-  frame_camera.camera.rolling_shutter_readout_s = 0.03;
+  frame_camera.camera.rolling_shutter_readout_s = readout_s;
   const auto camera = std::make_shared<const FrameCamera>(frame_camera);
   const core::Camera& cam = camera->camera;
   // Per frame period of 1/30 s: 1.5 deg about y and 0.5 deg about x, 2 cm sideways.
@@ -84,7 +85,7 @@ TEST(Frame, RollingShutterCompensationMovesKeypointsToTheMiddleRowsMoment) {
     Eigen::Vector2d uv = cam.project(point);
     Eigen::Vector3d seen = point;
     for (int k = 0; k < 5; ++k) {
-      seen = cameraAt((uv.y() - 240.0) / 480.0 * 0.03) * point;
+      seen = cameraAt((uv.y() - 240.0) / 480.0 * readout_s) * point;
       uv = cam.project(seen);
     }
     points.push_back(point);
@@ -119,6 +120,15 @@ TEST(Frame, RollingShutterCompensationMovesKeypointsToTheMiddleRowsMoment) {
                    .featuresInArea(frame.keypoints_un, cam.project(points[7]).x(),
                                    cam.project(points[7]).y(), 0.5)
                    .empty());
+}
+
+TEST(Frame, RollingShutterCompensationMovesKeypointsToTheMiddleRowsMoment) {
+  expectKeypointsAtTheMiddleRowsMoment(0.03);
+}
+
+// Frames played backwards, or a sensor mounted upside down whose images are turned upright.
+TEST(Frame, RollingShutterCompensationOfRowsReadBottomUp) {
+  expectKeypointsAtTheMiddleRowsMoment(-0.03);
 }
 
 TEST(Frame, GlobalShutterKeypointsStayWhereTheyWereRead) {

@@ -287,7 +287,7 @@ void Tracker::refineForRollingShutter() {
   // frames' (a hand-held camera's motion changes within a frame period): ATE on
   // tum_fr1_xyz_300 0.0074 -> 0.0049 m (bench/results/rolling_shutter.md). The full, robust
   // optimisation again: one plain round lost frames on fast walkers the masks missed.
-  if (current_.camera->camera.rolling_shutter_readout_s <= 0.0) return;
+  if (current_.camera->camera.rolling_shutter_readout_s == 0.0) return;
   current_.compensateRollingShutter(geometry::orthonormalised(current_.T_cw * last_.T_cw.inverse()),
                                     current_.timestamp - last_.timestamp);
   optimiseCurrentPose();
