@@ -97,6 +97,11 @@ void printSummary(const RunOptions& options, const system::SequenceRunSummary& s
         "max {:.1f}) after arrival\n",
         s.realtime_lag.median_ms, s.realtime_lag.p95_ms, s.realtime_lag.max_ms);
   }
+  if (s.estimated_readout_s) {
+    fmt::print(
+        "  shutter    rolling, rows read in {:.1f} ms (estimated; the camera says {:.1f} ms)\n",
+        *s.estimated_readout_s * 1e3, s.configured_readout_s * 1e3);
+  }
   if (s.network_runs > 0) {
     const std::string where =
         options.run.slam.deterministic

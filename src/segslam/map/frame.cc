@@ -132,9 +132,10 @@ optim::RgbdObservation Frame::observation(std::size_t i) const {
   return {{kp.pt.x, kp.pt.y}, right_u[i], camera->levels.inverseSigma2()[kp.octave]};
 }
 
-void Frame::compensateRollingShutter(const geometry::Pose& motion, double motion_dt) {
+void Frame::compensateRollingShutter(const geometry::Pose& motion, double motion_dt,
+                                     double readout_s) {
+  if (motion_dt <= 0.0) return;
   const core::Camera& cam = camera->camera;
-  if (cam.rolling_shutter_readout_s == 0.0 || motion_dt <= 0.0) return;
   if (read_points_.empty()) {
     read_points_.reserve(keypoints_un.size());
     for (const auto& kp : keypoints_un) read_points_.push_back(kp.pt);
@@ -145,21 +146,29 @@ void Frame::compensateRollingShutter(const geometry::Pose& motion, double motion
   const Eigen::AngleAxisd rotation(motion.rotation());
   const Eigen::Vector3d rotation_rate = rotation.angle() * rotation.axis() / motion_dt;
   const Eigen::Vector3d translation_rate = motion.translation() / motion_dt;
-  const double seconds_per_row = cam.rolling_shutter_readout_s / cam.height;
   const double middle_row = 0.5 * cam.height;
+  readout_gradient.assign(keypoints.size(), Eigen::Vector2d::Zero());
   for (std::size_t i = 0; i < keypoints.size(); ++i) {
-    // The sensor's row is the raw (distorted) one.
-    const double dt = (keypoints[i].pt.y - middle_row) * seconds_per_row;
+    // The sensor's row is the raw (distorted) one: its share of the readout from the middle row.
+    const double row_share = (keypoints[i].pt.y - middle_row) / cam.height;
     const cv::Point2f& read = read_points_[i];
     const bool has_depth = read_depth_[i] > 0.0f;
     // Without depth the point is taken as far away: only the rotation moves it.
     const Eigen::Vector3d seen = cam.backProject(read.x, read.y, has_depth ? read_depth_[i] : 1.0);
-    const Eigen::Vector3d shift =
-        has_depth ? Eigen::Vector3d(translation_rate * dt) : Eigen::Vector3d::Zero();
-    const Eigen::Vector3d moved = seen - (rotation_rate * dt).cross(seen) - shift;
+    // The point's velocity in camera coordinates, d(moved)/d(dt) with a minus sign.
+    const Eigen::Vector3d drift =
+        rotation_rate.cross(seen) + (has_depth ? translation_rate : Eigen::Vector3d::Zero());
+    const Eigen::Vector3d moved = seen - drift * (row_share * readout_s);
     if (moved.z() <= 0.0) continue;
     const Eigen::Vector2d uv = cam.project(moved);
     keypoints_un[i].pt = cv::Point2f(static_cast<float>(uv.x()), static_cast<float>(uv.y()));
+    const Eigen::Vector3d moved_per_readout = -row_share * drift;
+    const double inverse_z = 1.0 / moved.z();
+    readout_gradient[i] = Eigen::Vector2d(
+        cam.fx * inverse_z *
+            (moved_per_readout.x() - moved.x() * inverse_z * moved_per_readout.z()),
+        cam.fy * inverse_z *
+            (moved_per_readout.y() - moved.y() * inverse_z * moved_per_readout.z()));
     if (!has_depth) continue;
     depth[i] = static_cast<float>(moved.z());
     right_u[i] = keypoints_un[i].pt.x - static_cast<float>(camera->stereo.bf / depth[i]);

@@ -86,9 +86,10 @@ class Frame {
   // A rolling-shutter camera reads each row at another moment: moves every undistorted keypoint,
   // and its depth, to where the camera saw it at the middle row's moment, the one its pose is
   // for. `motion` maps camera coordinates at one moment to those `motion_dt` seconds later (the
-  // camera's motion between two frames). Each call starts again from the keypoints as read, so a
-  // better motion estimate can replace a first one. Does nothing for a global-shutter camera.
-  void compensateRollingShutter(const geometry::Pose& motion, double motion_dt);
+  // camera's motion between two frames); `readout_s` is the time from the first row to the last
+  // (negative: the last row read first). Each call starts again from the keypoints as read, so a
+  // better motion or readout estimate can replace a first one. Also sets readout_gradient.
+  void compensateRollingShutter(const geometry::Pose& motion, double motion_dt, double readout_s);
 
   std::uint64_t id = 0;
   double timestamp = 0.0;
@@ -100,6 +101,9 @@ class Frame {
   cv::Mat descriptors;                     // N x 32, CV_8U
   cv::Mat dynamic_mask;
   cv::Mat depth_image;  // CV_32F metres, shared with the caller (not copied)
+  // Per undistorted keypoint, after compensateRollingShutter: how far it moves per second of
+  // readout (pixels per second), what estimating the readout needs. Empty before.
+  std::vector<Eigen::Vector2d> readout_gradient;
   // The colour image (CV_8UC3), set only when a keyframe made from this frame needs it later (the
   // CNN loop detector); shared, not copied.
   cv::Mat image;

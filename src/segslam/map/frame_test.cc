@@ -98,8 +98,8 @@ void expectKeypointsAtTheMiddleRowsMoment(double readout_s) {
   Frame frame(0, 0.0, keypoints, cv::Mat(40, 32, CV_8U, cv::Scalar(0)), depth, cv::Mat(), camera);
   const Frame as_read = frame;
   // A first, wrong motion, then the right one: each call starts from the keypoints as read.
-  frame.compensateRollingShutter(motion.inverse(), frame_dt);
-  frame.compensateRollingShutter(motion, frame_dt);
+  frame.compensateRollingShutter(motion.inverse(), frame_dt, readout_s);
+  frame.compensateRollingShutter(motion, frame_dt, readout_s);
   double largest_before = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Eigen::Vector2d truth = cam.project(points[i]);
@@ -138,9 +138,39 @@ TEST(Frame, GlobalShutterKeypointsStayWhereTheyWereRead) {
               depth, cv::Mat(), camera);
   geometry::Pose motion = geometry::Pose::Identity();
   motion.translation() = Eigen::Vector3d(0.1, 0.0, 0.0);
-  frame.compensateRollingShutter(motion, 1.0 / 30.0);
+  frame.compensateRollingShutter(motion, 1.0 / 30.0, 0.0);
   EXPECT_EQ(frame.keypoints_un[0].pt, cv::Point2f(100.0f, 50.0f));
   EXPECT_FLOAT_EQ(frame.depth[0], 2.0f);
+}
+
+// What estimating the readout relies on: the gradient is the derivative of the compensated
+// keypoints with respect to the readout.
+TEST(Frame, ReadoutGradientIsTheDerivativeOfTheCompensatedKeypoints) {
+  const auto camera = std::make_shared<const FrameCamera>(cameraOfWidth(640));
+  cv::Mat depth(480, 640, CV_32F, cv::Scalar(1.5f));
+  depth(cv::Rect(0, 0, 320, 480)) = 0.0f;  // keypoints without depth on the left
+  std::vector<cv::KeyPoint> keypoints;
+  for (int i = 0; i < 12; ++i) keypoints.emplace_back(30.0f + 50.0f * i, 20.0f + 40.0f * i, 31.0f);
+  const Frame as_read(0, 0.0, keypoints, cv::Mat(12, 32, CV_8U, cv::Scalar(0)), depth, cv::Mat(),
+                      camera);
+  geometry::Pose motion = geometry::Pose::Identity();
+  motion.linear() =
+      Eigen::AngleAxisd(0.03, Eigen::Vector3d(0.3, 1.0, 0.2).normalized()).toRotationMatrix();
+  motion.translation() = Eigen::Vector3d(0.02, -0.01, 0.01);
+  const double readout = 0.02;
+  const double step = 1e-3;
+  Frame at = as_read;
+  Frame after = as_read;
+  at.compensateRollingShutter(motion, 1.0 / 30.0, readout);
+  after.compensateRollingShutter(motion, 1.0 / 30.0, readout + step);
+  ASSERT_EQ(at.readout_gradient.size(), keypoints.size());
+  for (std::size_t i = 0; i < keypoints.size(); ++i) {
+    const double du = (after.keypoints_un[i].pt.x - at.keypoints_un[i].pt.x) / step;
+    const double dv = (after.keypoints_un[i].pt.y - at.keypoints_un[i].pt.y) / step;
+    EXPECT_NEAR(at.readout_gradient[i].x(), du, 2.0) << i;
+    EXPECT_NEAR(at.readout_gradient[i].y(), dv, 2.0) << i;
+  }
+  EXPECT_GT(at.readout_gradient.back().norm(), 50.0) << "the bottom rows move with the readout";
 }
 
 TEST(KeypointGrid, FindsWhatABruteForceSearchFinds) {

@@ -299,6 +299,8 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     summary.loop_closing = options.slam.loop_closing && !options.map_file.localize_only;
     summary.loops = slam.loopClosingStats();
     summary.own_masks = slam.ownMaskStats();
+    summary.configured_readout_s = dataset.camera().rolling_shutter_readout_s;
+    summary.estimated_readout_s = slam.rollingShutterReadout();
     checkLoops(dataset, summary);
     evaluate(dataset, options, out_dir, trajectory, summary);
   }
@@ -396,6 +398,10 @@ nlohmann::json toJson(const SequenceRunSummary& summary) {
                          {"bundle_adjustment_seconds", summary.bundle_adjustment_seconds},
                          {"peak_rss_mb", summary.peak_rss_mb}};
   if (summary.realtime) json["realtime_lag"] = timingJson(summary.realtime_lag);
+  if (summary.estimated_readout_s) {
+    json["rolling_shutter_readout_s"] = {{"configured", summary.configured_readout_s},
+                                         {"estimated", *summary.estimated_readout_s}};
+  }
   if (summary.loop_closing) json["loop_closing"] = loopClosingJson(summary);
   if (summary.network_runs > 0) {
     json["network_runs"] = summary.network_runs;

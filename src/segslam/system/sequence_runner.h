@@ -86,6 +86,10 @@ struct SequenceRunSummary {
   double network_mean_ms = 0.0;
   int points_culled_by_late_masks = 0;
   mapping::OwnMaskStats own_masks;
+  // The camera's rolling-shutter readout and tracking's estimate of it (s); empty for a global
+  // shutter.
+  double configured_readout_s = 0.0;
+  std::optional<double> estimated_readout_s;
   // The ATE, and the RPE where it can be computed (evaluation->rpe_not_computed says why not).
   std::optional<eval::TrajectoryEvaluation> evaluation;
   bool has_ground_truth = false;

@@ -199,6 +199,11 @@ core::Trajectory SlamSystem::keyFrameTrajectory() const {
   return trajectory;
 }
 
+std::optional<double> SlamSystem::rollingShutterReadout() const {
+  std::lock_guard lock(map_.mutex);
+  return tracker_.rollingShutterReadout();
+}
+
 std::size_t SlamSystem::numKeyFrames() const {
   std::lock_guard lock(map_.mutex);
   return map_.numKeyFrames();

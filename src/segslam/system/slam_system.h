@@ -118,6 +118,9 @@ class SlamSystem {
   // Empty when loop closing is off.
   [[nodiscard]] loop::LoopClosingStats loopClosingStats() const;
   [[nodiscard]] mapping::OwnMaskStats ownMaskStats() const { return mapper_.ownMaskStats(); }
+  // The rolling-shutter readout tracking estimated (tracking::ReadoutEstimator); empty for a
+  // global-shutter camera.
+  [[nodiscard]] std::optional<double> rollingShutterReadout() const;
 
  private:
   // Deterministic mode: local mapping and loop closing of what is queued, on this thread.

@@ -61,7 +61,9 @@ TrackingResult Tracker::track(map::Frame frame) {
 
   // Rows read while the camera moved as it did over the last frames: a first placement of the
   // keypoints for the search, refined once the frame's own motion is known.
-  if (velocity_) current_.compensateRollingShutter(*velocity_, velocity_dt_);
+  if (velocity_ && readout() != 0.0) {
+    current_.compensateRollingShutter(*velocity_, velocity_dt_, readout());
+  }
   const bool tracked = state_ == TrackingState::kOk &&
                        ((velocity_ && trackWithMotionModel()) || trackReferenceKeyFrame());
   // A frame that loses track tries relocalisation at once: the camera may have been carried
@@ -287,10 +289,25 @@ void Tracker::refineForRollingShutter() {
   // frames' (a hand-held camera's motion changes within a frame period): ATE on
   // tum_fr1_xyz_300 0.0074 -> 0.0049 m (bench/results/rolling_shutter.md). The full, robust
   // optimisation again: one plain round lost frames on fast walkers the masks missed.
-  if (current_.camera->camera.rolling_shutter_readout_s == 0.0) return;
+  const double readout_s = readout();
+  if (readout_s == 0.0) return;
   current_.compensateRollingShutter(geometry::orthonormalised(current_.T_cw * last_.T_cw.inverse()),
-                                    current_.timestamp - last_.timestamp);
+                                    current_.timestamp - last_.timestamp, readout_s);
   optimiseCurrentPose();
+  readout_estimator_->addFrame(readoutEvidence(current_, readout_s));
+}
+
+std::optional<double> Tracker::rollingShutterReadout() const {
+  if (!readout_estimator_ || readout_estimator_->readout() == 0.0) return std::nullopt;
+  return readout_estimator_->readout();
+}
+
+double Tracker::readout() {
+  if (!readout_estimator_) {
+    const core::Camera& camera = current_.camera->camera;
+    readout_estimator_.emplace(camera.rolling_shutter_readout_s, 1.0 / camera.fps);
+  }
+  return readout_estimator_->readout();
 }
 
 bool Tracker::trackLocalMap() {

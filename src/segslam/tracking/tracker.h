@@ -15,6 +15,7 @@
 #include "segslam/tracking/keyframe_sink.h"
 #include "segslam/tracking/late_mask_check.h"
 #include "segslam/tracking/motion_limit.h"
+#include "segslam/tracking/readout_estimator.h"
 
 namespace segslam::tracking {
 
@@ -92,6 +93,9 @@ class Tracker {
 
   [[nodiscard]] TrackingState state() const { return state_; }
   [[nodiscard]] const map::Frame& currentFrame() const { return current_; }
+  // The rolling-shutter readout estimated so far (ReadoutEstimator); empty before the first frame
+  // or for a global-shutter camera.
+  [[nodiscard]] std::optional<double> rollingShutterReadout() const;
 
   // A tracked frame's pose relative to its reference keyframe: resolving it against the
   // keyframe's final (optimised) pose gives the frame's final pose.
@@ -130,6 +134,9 @@ class Tracker {
   void rememberPose();
   void recordPose();
   void reanchorLastFrame();
+  // The rolling-shutter readout the frames are compensated with: estimated from the tracked
+  // frames, starting from the camera's (ReadoutEstimator); 0 for a global-shutter camera.
+  double readout();
 
   map::Map& map_;
   KeyFrameSink& sink_;
@@ -153,6 +160,7 @@ class Tracker {
   // Poses of the last tracked frames, for late masks.
   std::deque<std::pair<std::uint64_t, geometry::Pose>> recent_poses_;
   std::uint64_t seen_corrections_ = 0;
+  std::optional<ReadoutEstimator> readout_estimator_;
 };
 
 }  // namespace segslam::tracking
