@@ -32,6 +32,8 @@ while [[ $# -gt 0 ]]; do
 done
 bench_require_segslam
 bench_require_dir "$shared/data/tum_fr1_xyz_300"
+mkdir -p "$out"
+out="$(realpath "$out")"  # the masked copy links to the sweep by absolute path
 /usr/bin/python3 -c "import cv2" 2>/dev/null ||
   bench_fail "/usr/bin/python3 lacks OpenCV, which ../shared/tools needs (scripts/install_deps.sh)"
 mkdir -p "$out/runs" "$root/bench/results"
@@ -58,7 +60,8 @@ people_sequence() {  # passes
 # where the dataset has masks.
 nothing_moves() {  # passes
   local dir="$out/sweeps$1_masked"
-  [[ -f "$dir/mask.txt" ]] && return
+  [[ -f "$dir/mask.txt" && -f "$dir/rgb.txt" ]] && return
+  rm -rf "$dir"
   mkdir -p "$dir/mask"
   for f in depth depth.txt groundtruth.txt rgb rgb.txt; do ln -sfn "$out/sweeps$1/$f" "$dir/$f"; done
   /usr/bin/python3 - "$dir" <<'PY'

@@ -5,22 +5,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "segslam/feature/mask_dilation.h"
+
 namespace segslam::feature {
-namespace {
-
-// Largest |dx| with dx^2 + dy^2 <= radius^2, for every dy in [-radius, radius]: integer arithmetic
-// so that the disc is exactly the set of pixels within Euclidean distance `radius`.
-std::vector<int> discHalfWidths(int radius) {
-  std::vector<int> half_widths;
-  for (int dy = -radius; dy <= radius; ++dy) {
-    int dx = 0;
-    while ((dx + 1) * (dx + 1) + dy * dy <= radius * radius) ++dx;
-    half_widths.push_back(dx);
-  }
-  return half_widths;
-}
-
-}  // namespace
 
 bool isDynamicAt(const cv::Mat& dynamic_mask, const cv::Point2f& pixel) {
   if (dynamic_mask.empty()) return false;
@@ -37,16 +24,16 @@ cv::Mat dilateDynamicMask(const cv::Mat& dynamic_mask, int radius) {
   }
   const cv::Rect box = cv::boundingRect(dynamic_mask);
   if (box.empty()) return {};
-  cv::Mat binary = cv::Mat::zeros(dynamic_mask.size(), CV_8UC1);
-  const int margin = std::max(radius, 0);
-  const cv::Rect around =
-      cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
-      cv::Rect(0, 0, dynamic_mask.cols, dynamic_mask.rows);
-  cv::threshold(dynamic_mask(around), binary(around), 0, 255, cv::THRESH_BINARY);
-  if (radius <= 0) return binary;
   cv::Mat dilated = cv::Mat::zeros(dynamic_mask.size(), CV_8UC1);
-  const cv::Size disc(2 * radius + 1, 2 * radius + 1);
-  cv::dilate(binary(around), dilated(around), cv::getStructuringElement(cv::MORPH_ELLIPSE, disc));
+  if (radius <= 0) {
+    cv::threshold(dynamic_mask(box), dilated(box), 0, 255, cv::THRESH_BINARY);
+    return dilated;
+  }
+  const cv::Rect around =
+      cv::Rect(box.x - radius, box.y - radius, box.width + 2 * radius, box.height + 2 * radius) &
+      cv::Rect(0, 0, dynamic_mask.cols, dynamic_mask.rows);
+  cv::Mat window = dilated(around);
+  dilateByRows(dynamic_mask(around), ellipseHalfWidths(radius), window);
   return dilated;
 }
 

@@ -3,19 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
 
+#include "segslam/feature/mask_dilation.h"
 #include "segslam/util/median.h"
 
 namespace segslam::segmentation {
 
 namespace {
 
-// Pixels within `radius` of the mask (Euclidean): a dilation by a disc whose cost does not grow
-// with the radius, which reaches 48 px for an old mask.
+// Pixels within `radius` of the mask (Euclidean); the radius reaches 48 px for an old mask.
 cv::Mat grownMask(const cv::Mat& mask, int radius) {
-  cv::Mat distance;
-  cv::distanceTransform(mask == 0, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  return distance <= static_cast<float>(radius);
+  return feature::dilateByRows(mask, feature::discHalfWidths(radius));
 }
 
 // Pixels more than `radius` inside the mask: an erosion by the disc of offsets within `radius`
@@ -143,6 +142,42 @@ cv::Rect searchWindow(const cv::Mat& mask, int band_px, int seed_step_px) {
   return {left, top, right - left, bottom - top};
 }
 
+// Every k-th pixel of every k-th row (the nearest pixel of a k times smaller image).
+template <typename Pixel>
+cv::Mat sampled(const cv::Mat& image, int k) {
+  cv::Mat small((image.rows + k - 1) / k, (image.cols + k - 1) / k, image.type());
+  for (int y = 0; y < small.rows; ++y) {
+    const auto* row = image.ptr<Pixel>(y * k);
+    auto* out = small.ptr<Pixel>(y);
+    for (int x = 0; x < small.cols; ++x) out[x] = row[x * k];
+  }
+  return small;
+}
+
+// Each pixel of `small` repeated over k x k pixels of `out`, which is at most k times larger.
+void repeated(const cv::Mat& small, int k, cv::Mat& out) {
+  for (int y = 0; y < out.rows; ++y) {
+    const auto* row = small.ptr<std::uint8_t>(y / k);
+    auto* target = out.ptr<std::uint8_t>(y);
+    for (int x = 0; x < out.cols; ++x) target[x] = row[x / k];
+  }
+}
+
+// refineWithin at 1/downscale of the resolution, into `refined` (the window of the result): the
+// pixel options scaled down with the images.
+void refineDownscaled(const cv::Mat& mask, const cv::Mat& depth, int band_px,
+                      const std::vector<float>& object_depths,
+                      const DepthRefinementOptions& options, cv::Mat refined) {
+  const int k = options.downscale;
+  const auto scaledDown = [k](int px) { return std::max((px + k - 1) / k, 1); };
+  DepthRefinementOptions scaled = options;
+  scaled.core_erosion_px = scaledDown(options.core_erosion_px);
+  scaled.seed_step_px = scaledDown(options.seed_step_px);
+  repeated(refineWithin(sampled<std::uint8_t>(mask, k), sampled<float>(depth, k),
+                        scaledDown(band_px), object_depths, scaled),
+           k, refined);
+}
+
 }  // namespace
 
 std::vector<float> objectDepths(const cv::Mat& mask, const cv::Mat& depth,
@@ -170,11 +205,20 @@ std::vector<float> objectDepths(const cv::Mat& mask, const cv::Mat& depth,
 cv::Mat refineMaskByDepth(const cv::Mat& mask, const cv::Mat& depth, int band_px,
                           const std::vector<float>& object_depths,
                           const DepthRefinementOptions& options) {
+  if (options.downscale < 1) {
+    throw std::invalid_argument("refineMaskByDepth: downscale must be >= 1");
+  }
   if (depth.empty() || mask.empty() || cv::countNonZero(mask) == 0) return mask.clone();
   const int band = std::max(band_px, 1);
-  const cv::Rect window = searchWindow(mask, band, options.seed_step_px);
+  // On the downscaled grid too, the window's corner is a seed.
+  const cv::Rect window =
+      searchWindow(mask, band, std::max(options.seed_step_px, 1) * options.downscale);
   cv::Mat refined = cv::Mat::zeros(mask.size(), CV_8UC1);
-  refineWithin(mask(window), depth(window), band, object_depths, options).copyTo(refined(window));
+  if (options.downscale > 1) {
+    refineDownscaled(mask(window), depth(window), band, object_depths, options, refined(window));
+  } else {
+    refineWithin(mask(window), depth(window), band, object_depths, options).copyTo(refined(window));
+  }
   return refined;
 }
 

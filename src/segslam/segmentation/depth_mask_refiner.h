@@ -20,6 +20,10 @@ struct DepthRefinementOptions {
   // mask: a person at a desk at his own depth is one region with it. Off, such a region is
   // dropped, which tells an object that has merged into a larger surface (a lost object, gone).
   bool keep_masked_part_of_joined_objects = true;
+  // The refinement runs at 1/downscale of the image's resolution (the pixel options above stay in
+  // the image's pixels) and its result is scaled back: a carried mask comes from the optical
+  // flow's half resolution, and SLAM dilates the mask by more than the lost detail anyway.
+  int downscale = 1;
 };
 
 // Median depth of each connected part of the mask (parts of at least min_object_area_px pixels

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
+#include <stdexcept>
 
 namespace segslam::segmentation {
 namespace {
@@ -28,6 +29,16 @@ TEST(RefineMaskByDepth, ALaggingMaskSnapsToTheObjectWithinTheBand) {
   const cv::Mat lagging = maskOf(kObject - cv::Point(12, 0));
   const cv::Mat refined = refineMaskByDepth(lagging, sceneDepth(), 16);
   EXPECT_EQ(cv::countNonZero(refined != maskOf(kObject)), 0);
+}
+
+TEST(RefineMaskByDepth, AtHalfResolutionALaggingMaskSnapsToTheObjectAsWell) {
+  DepthRefinementOptions half;
+  half.downscale = 2;
+  const cv::Mat lagging = maskOf(kObject - cv::Point(12, 0));
+  const cv::Mat refined = refineMaskByDepth(lagging, sceneDepth(), 16, {}, half);
+  EXPECT_EQ(cv::countNonZero(refined != maskOf(kObject)), 0);
+  half.downscale = 0;
+  EXPECT_THROW(refineMaskByDepth(lagging, sceneDepth(), 16, {}, half), std::invalid_argument);
 }
 
 TEST(RefineMaskByDepth, TheObjectIsNotFollowedBeyondTheBand) {

@@ -93,36 +93,41 @@ cv::Mat MaskPropagator::toSizeOf(const cv::Mat& small, const cv::Mat& image) {
 namespace {
 
 // One step of moveObjects: map_x/map_y say where each pixel of the new frame was in the old one,
-// so an object moves by minus the median of that offset over its pixels.
+// so an object moves by minus the median of that offset over its pixels. Objects are labelled
+// within the mask's bounding box only: people cover a small part of most frames.
 cv::Mat moveEachObject(const cv::Mat& mask, const cv::Mat& map_x, const cv::Mat& map_y) {
+  cv::Mat moved = cv::Mat::zeros(mask.size(), mask.type());
+  const cv::Rect box = cv::boundingRect(mask);
+  if (box.empty()) return moved;
   cv::Mat objects;
   cv::Mat stats;
   cv::Mat centroids;
-  const int count = cv::connectedComponentsWithStats(mask != 0, objects, stats, centroids, 8);
+  const int count =
+      cv::connectedComponentsWithStats(mask(box) != 0, objects, stats, centroids, 8, CV_32S);
   std::vector<std::vector<float>> dx(count);
   std::vector<std::vector<float>> dy(count);
-  for (int y = 0; y < mask.rows; ++y) {
+  for (int y = 0; y < box.height; ++y) {
     const auto* object = objects.ptr<int>(y);
-    const auto* mx = map_x.ptr<float>(y);
-    const auto* my = map_y.ptr<float>(y);
-    for (int x = 0; x < mask.cols; ++x) {
+    const auto* mx = map_x.ptr<float>(box.y + y) + box.x;
+    const auto* my = map_y.ptr<float>(box.y + y) + box.x;
+    for (int x = 0; x < box.width; ++x) {
       if (object[x] == 0) continue;
-      dx[object[x]].push_back(mx[x] - static_cast<float>(x));
-      dy[object[x]].push_back(my[x] - static_cast<float>(y));
+      dx[object[x]].push_back(mx[x] - static_cast<float>(box.x + x));
+      dy[object[x]].push_back(my[x] - static_cast<float>(box.y + y));
     }
   }
-  cv::Mat moved = cv::Mat::zeros(mask.size(), mask.type());
   const cv::Rect image(0, 0, mask.cols, mask.rows);
   for (int id = 1; id < count; ++id) {
     const cv::Point shift = dx[id].empty() ? cv::Point()
                                            : cv::Point(-cvRound(util::medianInPlace(dx[id])),
                                                        -cvRound(util::medianInPlace(dy[id])));
-    const cv::Rect box(stats.at<int>(id, cv::CC_STAT_LEFT), stats.at<int>(id, cv::CC_STAT_TOP),
-                       stats.at<int>(id, cv::CC_STAT_WIDTH), stats.at<int>(id, cv::CC_STAT_HEIGHT));
-    const cv::Rect target = (box + shift) & image;
+    const cv::Rect part(stats.at<int>(id, cv::CC_STAT_LEFT), stats.at<int>(id, cv::CC_STAT_TOP),
+                        stats.at<int>(id, cv::CC_STAT_WIDTH),
+                        stats.at<int>(id, cv::CC_STAT_HEIGHT));
+    const cv::Rect target = (part + box.tl() + shift) & image;
     if (target.empty()) continue;
     const cv::Rect source = target - shift;
-    mask(source).copyTo(moved(target), objects(source) == id);
+    mask(source).copyTo(moved(target), objects(source - box.tl()) == id);
   }
   return moved;
 }

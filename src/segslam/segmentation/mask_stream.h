@@ -63,7 +63,9 @@ struct MaskStreamOptions {
   // camera carried quickly through new space) the oldest is given up and goes on with its carried
   // mask, so that the queue's images never pile up.
   std::size_t max_queued_keyframes = 4;
-  DepthRefinementOptions refinement;
+  // At the optical flow's half resolution, where carried masks come from: a quarter of the
+  // tracking thread's time on the masks.
+  DepthRefinementOptions refinement{.downscale = 2};
 };
 
 // A frame as the segmenters see it.
