@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "segslam/geometry/pose.h"
@@ -20,6 +21,13 @@ struct CheckedPoseOptions {
   // already masked), and the pose from all of them stands.
   double agreement_m = 0.005;
   double agreement_deg = 0.3;
+  // With too few checked matches, the constant-velocity prediction stands in for their pose:
+  // provisional matches that a person carries move with him, static ones stay where the camera's
+  // motion puts them. The prediction is looser than a checked pose (the camera accelerates), so
+  // its agreement and its inlier test are wider.
+  double predicted_agreement_m = 0.02;
+  double predicted_agreement_deg = 1.0;
+  double predicted_inlier_chi2_scale = 4.0;
 };
 
 // Motion-only pose optimisation (optim::optimizePose) over matches of which some are
@@ -29,9 +37,11 @@ struct CheckedPoseOptions {
 // of the checked matches alone disagrees with that of all matches, the provisional matches that
 // do not fit it are outliers, and the pose is refined from the checked pose with the rest.
 // `provisional` has one flag per match; inlier flags of the result are per match.
+// `predicted_T_cw`: the pose the camera's recent motion predicts, if known.
 [[nodiscard]] optim::PoseOptimizationResult optimizePoseTrustingCheckedMatches(
     const optim::StereoIntrinsics& intrinsics, const geometry::Pose& initial_T_cw,
     const std::vector<optim::PoseObservation>& matches, const std::vector<bool>& provisional,
+    const std::optional<geometry::Pose>& predicted_T_cw = std::nullopt,
     const CheckedPoseOptions& options = {});
 
 }  // namespace segslam::tracking

@@ -64,8 +64,10 @@ TrackingResult Tracker::track(map::Frame frame) {
   if (velocity_ && readout() != 0.0) {
     current_.compensateRollingShutter(*velocity_, velocity_dt_, readout());
   }
+  predicted_T_cw_.reset();
   const bool tracked = state_ == TrackingState::kOk &&
                        ((velocity_ && trackWithMotionModel()) || trackReferenceKeyFrame());
+  if (!tracked) predicted_T_cw_.reset();
   // A frame that loses track tries relocalisation at once: the camera may have been carried
   // elsewhere, and the frame is as good a query as the next.
   const bool relocalised = !tracked && relocalise();
@@ -180,6 +182,7 @@ void Tracker::addVisualOdometryPoints() {
 bool Tracker::trackWithMotionModel() {
   addVisualOdometryPoints();
   current_.T_cw = geometry::orthonormalised(*velocity_ * last_.T_cw);
+  predicted_T_cw_ = current_.T_cw;
   std::fill(current_.map_points.begin(), current_.map_points.end(), nullptr);
   int matches = searchFromLastFrame(current_, last_, kMotionSearchRadius);
   if (matches < 20) {
@@ -272,8 +275,9 @@ int Tracker::optimiseCurrentPose() {
     keypoint_of.push_back(i);
   }
   if (observations.size() < static_cast<std::size_t>(kMinPoseMatches)) return 0;
-  const auto result = optimizePoseTrustingCheckedMatches(
-      current_.camera->stereo, current_.T_cw, observations, provisional, options_.checked_pose);
+  const auto result =
+      optimizePoseTrustingCheckedMatches(current_.camera->stereo, current_.T_cw, observations,
+                                         provisional, predicted_T_cw_, options_.checked_pose);
   current_.T_cw = result.T_cw;
   current_.has_pose = true;
   for (std::size_t k = 0; k < keypoint_of.size(); ++k) {

@@ -147,6 +147,8 @@ class Tracker {
   map::Frame last_;
   std::optional<geometry::Pose> velocity_;
   double velocity_dt_ = 0.0;  // seconds between the two frames velocity_ was measured on
+  // The current frame's pose as velocity_ predicts it, while it is being tracked from the last.
+  std::optional<geometry::Pose> predicted_T_cw_;
   std::shared_ptr<map::KeyFrame> reference_keyframe_;
   std::shared_ptr<map::KeyFrame> last_keyframe_;
   std::uint64_t last_keyframe_frame_id_ = 0;
