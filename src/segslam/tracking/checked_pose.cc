@@ -16,7 +16,7 @@ bool agree(const geometry::Pose& a, const geometry::Pose& b, double max_m, doubl
 
 // The pose refined from `reference_T_cw` with the checked matches and the provisional ones that
 // fit the reference (their chi2 within `chi2_scale` times the inlier threshold); nullopt when
-// fewer than `min_kept` matches are left.
+// fewer than `min_kept` matches are left or fit the refined pose.
 std::optional<optim::PoseOptimizationResult> refineFromReference(
     const optim::StereoIntrinsics& intrinsics, const geometry::Pose& reference_T_cw,
     const std::vector<optim::PoseObservation>& matches, const std::vector<bool>& provisional,
@@ -35,6 +35,7 @@ std::optional<optim::PoseOptimizationResult> refineFromReference(
   }
   if (kept.size() < static_cast<std::size_t>(min_kept)) return std::nullopt;
   const auto refined = optim::optimizePose(intrinsics, reference_T_cw, kept);
+  if (refined.num_inliers < min_kept) return std::nullopt;
   optim::PoseOptimizationResult result{refined.T_cw, std::vector<bool>(matches.size(), false),
                                        refined.num_inliers};
   for (std::size_t j = 0; j < kept_index.size(); ++j)
