@@ -24,9 +24,9 @@ struct CheckedPoseOptions {
   // With too few checked matches, the constant-velocity prediction stands in for their pose:
   // provisional matches that a person carries move with him, static ones stay where the camera's
   // motion puts them. The prediction is looser than a checked pose (the camera accelerates), so
-  // its agreement and its inlier test are wider. Rotation: at 1 degree the nearly all-provisional
-  // first map's frames (their velocity from one or two frames) were refined from the prediction
-  // with a third of their inliers, and fr1_near_p1_s41 from frame 115 lost the map in 4 of 9 runs.
+  // its agreement and its inlier test are wider. At 1 degree the first map's frames (all points
+  // provisional, the velocity from one or two frames) were refined from the prediction with a
+  // third of their inliers: fr1_near_p1_s41 from frame 115 lost the map in 2 of 5 runs.
   double predicted_agreement_m = 0.02;
   double predicted_agreement_deg = 2.5;
   double predicted_inlier_chi2_scale = 4.0;
