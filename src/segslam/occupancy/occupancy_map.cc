@@ -5,10 +5,12 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <system_error>
 
+#include "segslam/occupancy/octree_data.h"
 #include "segslam/util/error.h"
 
 namespace segslam::occupancy {
@@ -178,13 +180,21 @@ std::unique_ptr<octomap::OcTree> readOctree(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   const OctreeHeader header = readOctreeHeader(in, file);
   auto tree = std::make_unique<octomap::OcTree>(header.resolution);
-  if (header.size > 0) tree->readBinaryData(in);
-  if (!in || tree->size() != header.size) {
-    util::failAt(file,
-                 fmt::format("its data is cut short or damaged ({} of the {} nodes its header "
-                             "gives)",
-                             tree->size(), header.size));
+  if (header.size == 0) return tree;
+  const std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const OctreeDataCheck check = checkOctreeData(data, tree->getTreeDepth());
+  if (!check.extent) {
+    util::failAt(file, fmt::format("its data is cut short or damaged ({} after {} of the {} "
+                                   "nodes its header gives)",
+                                   check.problem, check.nodes_read, header.size));
   }
+  if (check.extent->nodes != header.size) {
+    util::failAt(file, fmt::format("its data is cut short or damaged ({} nodes, its header "
+                                   "gives {})",
+                                   check.extent->nodes, header.size));
+  }
+  std::istringstream nodes(data.substr(0, check.extent->bytes));
+  tree->readBinaryData(nodes);
   return tree;
 }
 

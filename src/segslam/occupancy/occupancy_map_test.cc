@@ -167,5 +167,27 @@ TEST(OccupancyMap, BadFilesAreErrorsNamingThem) {
   }
 }
 
+// A node stream of inner nodes only, as deep as its bytes go: OctoMap's reader would recurse
+// once per node (two million deep here) until the stack overflows.
+TEST(OccupancyMap, ANodeStreamDeeperThanAnOctreeIsAnErrorNotACrash) {
+  const segslam::testing::ScopedTempDir dir;
+  const auto deep = dir.path() / "deep.bt";
+  {
+    std::ofstream out(deep, std::ios::binary);
+    out << "# Octomap OcTree binary file\nid OcTree\nsize 9\nres 0.05\ndata\n"
+        << std::string(4u << 20, '\xff');
+  }
+  try {
+    (void)readOctree(deep);
+    ADD_FAILURE() << "expected a util::Error";
+  } catch (const util::Error& e) {
+    EXPECT_NE(std::string(e.what()).find(deep.string() + ": its data is cut short or damaged "
+                                                         "(inner nodes deeper than the tree's "
+                                                         "16 levels"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace segslam::occupancy
