@@ -1,5 +1,7 @@
 #include "segslam/util/heap_retention.h"
 
+#include "segslam/util/sanitizer.h"
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -10,7 +12,7 @@ namespace {
 
 // Under AddressSanitizer malloc is the sanitizer's: glibc's settings and trims reach nothing.
 constexpr bool kGlibcAllocator =
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__GLIBC__) && !defined(SEGSLAM_ADDRESS_SANITIZER)
     true;
 #else
     false;

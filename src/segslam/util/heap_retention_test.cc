@@ -10,11 +10,13 @@
 #include <thread>
 #include <vector>
 
+#include "segslam/util/sanitizer.h"
+
 namespace segslam::util {
 namespace {
 
 // Under AddressSanitizer malloc is the sanitizer's, which takes no glibc thresholds.
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__GLIBC__) && !defined(SEGSLAM_ADDRESS_SANITIZER)
 constexpr bool kGlibcAllocator = true;
 #else
 constexpr bool kGlibcAllocator = false;
