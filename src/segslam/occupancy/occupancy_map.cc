@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include "segslam/occupancy/octree_data.h"
 #include "segslam/util/error.h"
@@ -181,7 +182,7 @@ std::unique_ptr<octomap::OcTree> readOctree(const std::filesystem::path& file) {
   const OctreeHeader header = readOctreeHeader(in, file);
   auto tree = std::make_unique<octomap::OcTree>(header.resolution);
   if (header.size == 0) return tree;
-  const std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   const OctreeDataCheck check = checkOctreeData(data, tree->getTreeDepth());
   if (!check.extent) {
     util::failAt(file, fmt::format("its data is cut short or damaged ({} after {} of the {} "
@@ -193,7 +194,8 @@ std::unique_ptr<octomap::OcTree> readOctree(const std::filesystem::path& file) {
                                    "gives {})",
                                    check.extent->nodes, header.size));
   }
-  std::istringstream nodes(data.substr(0, check.extent->bytes));
+  data.resize(check.extent->bytes);
+  std::istringstream nodes(std::move(data));
   tree->readBinaryData(nodes);
   return tree;
 }
