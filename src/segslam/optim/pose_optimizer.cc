@@ -53,10 +53,11 @@ bool isNegligible(const Vector6d& step, const Linearisation& at) {
   return step.norm() < kConvergedStepNorm || predicted_decrease < kConvergedCostDecrease * at.cost;
 }
 
-// Adds weight J^T J to the hessian and -weight J^T residual to the gradient. Loops over the raw
-// coefficients rather than Eigen's product expressions: this runs for every observation in every
-// iteration, and those expressions cost a function call per coefficient where the compiler does not
-// inline them (the sanitizer build at -O1, where they were a tenth of whole-sequence tests' time).
+// Adds weight J^T J to the hessian's upper triangle (mirrored once all observations are in, by
+// completeHessian) and -weight J^T residual to the gradient. Loops over the raw coefficients
+// rather than Eigen's product expressions: this runs for every observation in every iteration,
+// and those expressions cost a function call per coefficient where the compiler does not inline
+// them (the sanitizer build at -O1, where they were a tenth of whole-sequence tests' time).
 template <int kRows>
 void addWeighted(const Eigen::Matrix<double, kRows, 6>& jacobian,
                  const Eigen::Matrix<double, kRows, 1>& residual, double weight,
@@ -67,7 +68,7 @@ void addWeighted(const Eigen::Matrix<double, kRows, 6>& jacobian,
   double* gradient = result.gradient.data();
   for (int c = 0; c < 6; ++c) {
     const double* column_c = j + c * kRows;
-    for (int d = 0; d < 6; ++d) {
+    for (int d = c; d < 6; ++d) {
       const double* column_d = j + d * kRows;
       double sum = 0.0;
       for (int r = 0; r < kRows; ++r) sum += column_c[r] * column_d[r];
@@ -76,6 +77,13 @@ void addWeighted(const Eigen::Matrix<double, kRows, 6>& jacobian,
     double projected = 0.0;
     for (int r = 0; r < kRows; ++r) projected += column_c[r] * e[r];
     gradient[c] -= weight * projected;
+  }
+}
+
+// J^T J is symmetric: its lower triangle is the upper one's mirror, summed in the same order.
+void completeHessian(Linearisation& result) {
+  for (int c = 0; c < 6; ++c) {
+    for (int d = c + 1; d < 6; ++d) result.hessian(d, c) = result.hessian(c, d);
   }
 }
 
@@ -102,6 +110,7 @@ class PoseProblem {
         accumulate<2>(observation, p_c, robust ? kMonoHuberWidth : 0.0, result);
       }
     }
+    completeHessian(result);
     return result;
   }
 
