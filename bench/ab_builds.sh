@@ -6,7 +6,7 @@
 # that lost frames (lost frames come in rare long streaks: one run's 40 outweigh twenty runs'
 # none, so the count of runs says more than the sum), tracking median, keyframes, network runs.
 #
-#   bench/ab_builds.sh --base DIR --change DIR [--seeds "1 2 3"] [--only NAMES] [--out DIR]
+#   bench/ab_builds.sh --base DIR --change DIR [--seeds "1 2 3"] [--only NAME,NAME] [--out DIR]
 #                      [--report FILE]
 #
 # DIR: a build folder holding `segslam` (e.g. a `git worktree` of the base, built with
