@@ -1,7 +1,5 @@
 #include "mask_arguments.h"
 
-#include <spdlog/spdlog.h>
-
 namespace segslam::apps {
 
 namespace {
@@ -60,9 +58,7 @@ system::MaskSourceOptions maskSourceOptions(MaskArguments& arguments) {
   options.model_config = arguments.model_config;
   if (!arguments.model_file.empty()) options.model_file = arguments.model_file;
   if (arguments.source == "auto") {
-    const auto automatic = system::automaticMaskSource(options);
-    arguments.source = system::maskSourceName(automatic.source);
-    spdlog::info("masks: {} ({}; --seg picks others)", arguments.source, automatic.reason);
+    arguments.source = system::maskSourceName(system::automaticMaskSource(options).source);
   }
   options.source = system::maskSourceFromName(arguments.source);
   options.network_interval = arguments.network_interval;

@@ -17,12 +17,17 @@ AutomaticLoopDetector automaticLoopDetector(
     const std::optional<std::filesystem::path>& backbone_model) {
   const auto config = place::readCnnBackboneConfig(backbone_config);
   if (backbone_model) {
-    return {"cnn", fmt::format("CNN backbone {} (named)", backbone_model->string())};
+    const std::string reason = fmt::format("CNN backbone {} (named)", backbone_model->string());
+    spdlog::info("loop candidates: cnn ({})", reason);
+    return {"cnn", reason};
   }
   try {
     const auto model = place::resolveBackboneModelFile(config, backbone_config, std::nullopt);
-    return {"cnn", fmt::format("CNN backbone {}", model.lexically_normal().string())};
+    const std::string reason = fmt::format("CNN backbone {}", model.lexically_normal().string());
+    spdlog::info("loop candidates: cnn ({})", reason);
+    return {"cnn", reason};
   } catch (const util::Error& e) {
+    spdlog::warn("loop candidates: bag of words, the CNN backbone is missing: {}", e.what());
     return {"bow", e.what()};
   }
 }
@@ -42,9 +47,7 @@ std::string resolvedDetector(const LoopDetectionRequest& request) {
   }
   if (!request.loop_closing) return "none";
   if (request.detector != "auto") return request.detector;
-  const auto automatic = automaticLoopDetector(request.backbone_config, request.backbone_model);
-  spdlog::info("loop candidates: {} ({})", automatic.detector, automatic.reason);
-  return automatic.detector;
+  return automaticLoopDetector(request.backbone_config, request.backbone_model).detector;
 }
 
 loop::CnnLoopBackbone loadBackbone(const LoopDetectionRequest& request) {

@@ -15,7 +15,7 @@ namespace segslam::system {
 // has the best mean union-mask AUC (bench/results/loops.md) and it corrects the drifting
 // synthetic laps as well as bag of words (bench/results/loop_closure.md). A backbone named in
 // `backbone_model` counts as found (loading it reports what is wrong with it); a broken backbone
-// config is an error, not a fallback.
+// config is an error, not a fallback. The choice is logged, the fallback as a warning.
 struct AutomaticLoopDetector {
   std::string detector;  // "cnn" or "bow"
   std::string reason;    // which backbone was found, or why none was
@@ -46,7 +46,7 @@ struct LoopDetection {
   std::filesystem::path vocabulary_file;  // the vocabulary loaded (empty: none)
 };
 
-// Resolves "auto" (automaticLoopDetector, logged), loads the vocabulary and, for the cnn
+// Resolves "auto" (automaticLoopDetector), loads the vocabulary and, for the cnn
 // detector, the backbone into `slam`. Throws util::Error for an unknown detector, or a named
 // vocabulary or backbone that does not load.
 LoopDetection configureLoopDetection(const LoopDetectionRequest& request, SlamOptions& slam);

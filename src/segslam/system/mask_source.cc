@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <spdlog/spdlog.h>
 
 #include <array>
 #include <opencv2/imgproc.hpp>
@@ -50,14 +51,21 @@ std::string maskSourceName(MaskSource source) {
 AutomaticMaskSource automaticMaskSource(const MaskSourceOptions& options) {
   const auto config = segmentation::readModelConfig(options.model_config);
   if (options.model_file) {
-    return {MaskSource::kFused,
-            fmt::format("segmentation network {} (named)", options.model_file->string())};
+    const std::string reason =
+        fmt::format("segmentation network {} (named)", options.model_file->string());
+    spdlog::info("masks: fused ({})", reason);
+    return {MaskSource::kFused, reason};
   }
   try {
     const auto model = segmentation::resolveModelFile(config, options.model_config, std::nullopt);
-    return {MaskSource::kFused,
-            fmt::format("segmentation network {}", model.lexically_normal().string())};
+    const std::string reason =
+        fmt::format("segmentation network {}", model.lexically_normal().string());
+    spdlog::info("masks: fused ({})", reason);
+    return {MaskSource::kFused, reason};
   } catch (const util::Error& e) {
+    // A warning, not a note: without the network a person who stands still is not masked, and a
+    // build or checkout that cannot see its models gives far worse trajectories among people.
+    spdlog::warn("masks: geometric only, the segmentation network is missing: {}", e.what());
     return {MaskSource::kGeometric, e.what()};
   }
 }
@@ -135,6 +143,20 @@ const core::Camera& cameraOfDatasetWithMasks(const io::TumDataset& dataset, Mask
   return dataset.camera();
 }
 
+// Masks are carried between frames by optical flow at half resolution, which OpenCV's DIS flow
+// computes only on images with sides of at least 12 pixels.
+constexpr int kSmallestMaskedImageSide = 32;
+
+void requireFlowSize(const core::Camera& camera, MaskSource source) {
+  if (camera.width < kSmallestMaskedImageSide || camera.height < kSmallestMaskedImageSide) {
+    throw util::Error(fmt::format(
+        "{} masks need images of at least {} x {} pixels (they are carried between frames by "
+        "optical flow); the camera's are {} x {} (--seg none or oracle work on any size)",
+        maskSourceName(source), kSmallestMaskedImageSide, kSmallestMaskedImageSide, camera.width,
+        camera.height));
+  }
+}
+
 }  // namespace
 
 FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSourceOptions& options,
@@ -144,6 +166,9 @@ FrameMaskSource::FrameMaskSource(const io::TumDataset& dataset, const MaskSource
 FrameMaskSource::FrameMaskSource(const core::Camera& camera, const MaskSourceOptions& options,
                                  bool synchronous)
     : source_(options.source) {
+  if (usesNetwork(source_) || source_ == MaskSource::kGeometric) {
+    requireFlowSize(camera, source_);
+  }
   const auto flow = std::make_shared<segmentation::MaskPropagator>();
   if (usesNetwork(source_)) {
     const auto config = segmentation::readModelConfig(options.model_config);

@@ -47,6 +47,7 @@ struct MaskSourceOptions {
 // The masks used when none are asked for: fused when the segmentation network is found, else
 // geometric, which needs no model. A network named in `options.model_file` is taken as found
 // (loading it reports what is wrong with it); a broken model config is an error, not a fallback.
+// The choice is logged, the fallback as a warning naming the places tried.
 struct AutomaticMaskSource {
   MaskSource source = MaskSource::kGeometric;
   std::string reason;  // which network was found, or why none was
