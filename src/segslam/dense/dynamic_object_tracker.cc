@@ -63,12 +63,19 @@ std::vector<std::size_t> DynamicObjectTracker::link(
 
 std::size_t DynamicObjectTracker::nearbyTrack(const std::vector<LabelSegment>& segments,
                                               const std::vector<std::size_t>& track_of,
-                                              std::size_t segment) const {
+                                              std::size_t segment,
+                                              const KeyFrameDepthView& view) const {
+  // A segment as large as a person seen on their own, with the room seen between it and a
+  // tracked one, is someone else walking beside them (two walkers side by side made one track).
+  const bool whole = segments[segment].indices.size() >= options_.min_reach_points;
   std::size_t nearest_track = tracks_.size();
   float nearest = std::numeric_limits<float>::max();
   for (std::size_t other = 0; other < segments.size(); ++other) {
     if (track_of[other] >= tracks_.size() || segments[other].instance != 0 ||
         segments[other].label != segments[segment].label) {
+      continue;
+    }
+    if (whole && view.showsBackgroundBetween(segments[segment].centroid, segments[other].centroid)) {
       continue;
     }
     const float gap = boundsGap(segments[segment], segments[other]);
@@ -129,7 +136,7 @@ void DynamicObjectTracker::addKeyFrame(std::uint64_t keyframe_id, double timesta
       });
       track_of[s] = static_cast<std::size_t>(same - tracks_.begin());
     } else if (track_of[s] >= tracks_.size()) {
-      track_of[s] = nearbyTrack(segments, track_of, s);
+      track_of[s] = nearbyTrack(segments, track_of, s, view);
       if (track_of[s] >= tracks_.size() && segment.indices.size() < options_.min_track_points) {
         continue;
       }

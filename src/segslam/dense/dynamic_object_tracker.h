@@ -30,7 +30,8 @@ struct DynamicTrackingOptions {
   // it was seen, not across the reach of its absence, unless by a segment of at least this many
   // points in a keyframe that shows the track's place left (KeyFrameDepthView): a stray label, a
   // walker's partial view far away, or a walker passing in front of a seated person made the
-  // seated person's track travel.
+  // seated person's track travel. A segment this large is also a person seen whole enough to be
+  // someone else than a tracked segment beside it (nearbyTrack).
   std::size_t min_reach_points = 1000;
 };
 
@@ -58,7 +59,8 @@ struct DynamicTrack {
 // instances, or a dataset's ground truth) follow that id; the others are linked to the track of
 // their label whose last centroid is nearest within reach, each track taking one segment per
 // keyframe; another segment whose bounds come within `slack` of a tracked one of the keyframe
-// (larger segments first) joins that track: a person split in two by a table edge.
+// (larger segments first) joins that track: a person split in two by a table edge. Not when it
+// is person-sized and the room is seen between the two: then it is a second person beside them.
 class DynamicObjectTracker {
  public:
   explicit DynamicObjectTracker(DynamicTrackingOptions options);
@@ -78,10 +80,11 @@ class DynamicObjectTracker {
                                               const std::vector<LabelSegment>& segments,
                                               const std::vector<PlaceSight>& last_places) const;
   // The track of a segment of this keyframe (`track_of`, tracks_.size() and beyond = none yet)
-  // whose bounds come within slack of `segment`'s; tracks_.size() when none does.
+  // whose bounds come within slack of `segment`'s, unless `segment` is of min_reach_points and
+  // `view` shows the room between the two; tracks_.size() when none does.
   [[nodiscard]] std::size_t nearbyTrack(const std::vector<LabelSegment>& segments,
                                         const std::vector<std::size_t>& track_of,
-                                        std::size_t segment) const;
+                                        std::size_t segment, const KeyFrameDepthView& view) const;
   void extend(std::size_t track, std::uint64_t keyframe_id, double timestamp,
               const LabelledCloud& points, const LabelSegment& segment);
 

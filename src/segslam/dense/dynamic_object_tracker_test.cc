@@ -76,6 +76,22 @@ TEST(DynamicObjectTracker, TwoPeopleApartAreTwoTracksEvenWhenSplitBySomething) {
   EXPECT_EQ(tracker.tracks()[1].keyframes.size(), 6u);
 }
 
+// Two people walking side by side, their bounds 0.45 m apart (within slack): the room seen
+// between them keeps them two tracks, where joining by touching made them one.
+TEST(DynamicObjectTracker, TwoPeopleSideBySideAreTwoTracks) {
+  DynamicObjectTracker tracker({});
+  for (int k = 0; k < 6; ++k) {
+    const float step = 0.4f * static_cast<float>(k);
+    LabelledCloud cloud;
+    addPerson(cloud, step, 2.0f);
+    addPerson(cloud, 0.85f + step, 2.0f);
+    track(tracker, static_cast<std::uint64_t>(k), 0.5 * k, cloud);
+  }
+  ASSERT_EQ(tracker.tracks().size(), 2u);
+  EXPECT_EQ(tracker.tracks()[0].keyframes.size(), 6u);
+  EXPECT_EQ(tracker.tracks()[1].keyframes.size(), 6u);
+}
+
 TEST(DynamicObjectTracker, InstanceIdsAreFollowedAndOnlyAVeryLongAbsenceStartsANewTrack) {
   DynamicObjectTracker tracker({});
   LabelledCloud first;

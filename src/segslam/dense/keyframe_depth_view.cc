@@ -1,6 +1,8 @@
 #include "segslam/dense/keyframe_depth_view.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 
 namespace segslam::dense {
 
@@ -75,6 +77,34 @@ PlaceSight KeyFrameDepthView::look(const Eigen::Vector3f& place_w) const {
                : PlaceSight{};
   }
   return {PlaceSight::Kind::kSegment, static_cast<std::size_t>(nearest->owner), in_front};
+}
+
+bool KeyFrameDepthView::showsBackgroundBetween(const Eigen::Vector3f& a_w,
+                                               const Eigen::Vector3f& b_w) const {
+  int a_col = 0;
+  int a_row = 0;
+  float a_depth = 0.0f;
+  int b_col = 0;
+  int b_row = 0;
+  float b_depth = 0.0f;
+  if (!project(a_w, a_col, a_row, a_depth) || !project(b_w, b_col, b_row, b_depth)) return false;
+  const int steps = std::max(std::abs(b_col - a_col), std::abs(b_row - a_row));
+  for (int step = 1; step < steps; ++step) {
+    const float t = static_cast<float>(step) / static_cast<float>(steps);
+    const int col = static_cast<int>(std::lround(static_cast<float>(a_col) +
+                                                 t * static_cast<float>(b_col - a_col)));
+    const int row = static_cast<int>(std::lround(static_cast<float>(a_row) +
+                                                 t * static_cast<float>(b_row - a_row)));
+    const Cell& cell = cells_[static_cast<std::size_t>(row * cols_ + col)];
+    const float depth = a_depth + t * (b_depth - a_depth);
+    // Whatever is seen there, static or under a mask but of no segment (a mask spilling over
+    // the room between two people), well behind the line is the room.
+    if ((cell.owner == kStatic || cell.owner == kUnsegmented) &&
+        cell.depth > depth + static_cast<float>(options_.behind_margin)) {
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace segslam::dense

@@ -45,6 +45,12 @@ class KeyFrameDepthView {
 
   [[nodiscard]] PlaceSight look(const Eigen::Vector3f& place_w) const;
 
+  // Whether the view shows a static surface well behind the line between two places (the
+  // segments' centroids): the room seen between them, so that they are two things standing apart,
+  // not one person cut in two by something in front (a table edge) or by a mask's gap.
+  [[nodiscard]] bool showsBackgroundBetween(const Eigen::Vector3f& a_w,
+                                            const Eigen::Vector3f& b_w) const;
+
  private:
   static constexpr int kStatic = -1;
   static constexpr int kUnsegmented = -2;

@@ -87,5 +87,34 @@ TEST(KeyFrameDepthView, PlacesAreLookedAtFromTheKeyFramesPose) {
   EXPECT_EQ(scene.view(T_cw).look(kPlace).kind, PlaceSight::Kind::kUnseen);
 }
 
+TEST(KeyFrameDepthView, TheRoomSeenBetweenTwoPlacesShowsThemApart) {
+  // Two people side by side at 2 m, 0.3 m apart: the wall is seen between them.
+  const Eigen::Vector3f left(0.2f, -0.5f, 2.15f);
+  const Eigen::Vector3f right(0.9f, -0.5f, 2.15f);
+  Scene beside;
+  addPersonAt(beside.dynamic_points, 0.0f, 2.0f);
+  addPersonAt(beside.dynamic_points, 0.7f, 2.0f);
+  EXPECT_TRUE(beside.view().showsBackgroundBetween(left, right));
+  EXPECT_TRUE(beside.view().showsBackgroundBetween(right, left));
+  // One person cut in two by a table in front of their waist.
+  const Eigen::Vector3f chest(0.2f, -0.9f, 2.15f);
+  const Eigen::Vector3f legs(0.2f, 0.1f, 2.15f);
+  Scene cut;
+  addBox(cut.dynamic_points, {0.0f, -1.3f, 2.0f}, {0.4f, -0.5f, 2.3f}, SemanticClass::kPerson);
+  addBox(cut.dynamic_points, {0.0f, -0.1f, 2.0f}, {0.4f, 0.3f, 2.3f}, SemanticClass::kPerson);
+  addBox(cut.static_points, {-1.0f, -0.5f, 1.5f}, {1.0f, -0.1f, 1.6f}, SemanticClass::kNone);
+  EXPECT_FALSE(cut.view().showsBackgroundBetween(chest, legs));
+  // The same person with their waist missed by the mask: the waist is in the static layer, at
+  // their depth, not behind them.
+  Scene missed;
+  addPersonAt(missed.static_points, 0.0f, 2.0f);
+  addBox(missed.dynamic_points, {0.0f, -1.3f, 2.0f}, {0.4f, -0.5f, 2.3f}, SemanticClass::kPerson);
+  addBox(missed.dynamic_points, {0.0f, -0.1f, 2.0f}, {0.4f, 0.3f, 2.3f}, SemanticClass::kPerson);
+  EXPECT_FALSE(missed.view().showsBackgroundBetween(chest, legs));
+  // Nothing to tell outside the image or without a view.
+  EXPECT_FALSE(beside.view().showsBackgroundBetween(left, {9.0f, -0.5f, 2.15f}));
+  EXPECT_FALSE(KeyFrameDepthView().showsBackgroundBetween(left, right));
+}
+
 }  // namespace
 }  // namespace segslam::dense
