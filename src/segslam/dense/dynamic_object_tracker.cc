@@ -75,7 +75,8 @@ std::size_t DynamicObjectTracker::nearbyTrack(const std::vector<LabelSegment>& s
         segments[other].label != segments[segment].label) {
       continue;
     }
-    if (whole && view.showsBackgroundBetween(segments[segment].centroid, segments[other].centroid)) {
+    if (whole &&
+        view.showsBackgroundBetween(segments[segment].centroid, segments[other].centroid)) {
       continue;
     }
     const float gap = boundsGap(segments[segment], segments[other]);

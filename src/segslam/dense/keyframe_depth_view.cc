@@ -91,10 +91,10 @@ bool KeyFrameDepthView::showsBackgroundBetween(const Eigen::Vector3f& a_w,
   const int steps = std::max(std::abs(b_col - a_col), std::abs(b_row - a_row));
   for (int step = 1; step < steps; ++step) {
     const float t = static_cast<float>(step) / static_cast<float>(steps);
-    const int col = static_cast<int>(std::lround(static_cast<float>(a_col) +
-                                                 t * static_cast<float>(b_col - a_col)));
-    const int row = static_cast<int>(std::lround(static_cast<float>(a_row) +
-                                                 t * static_cast<float>(b_row - a_row)));
+    const int col = static_cast<int>(
+        std::lround(static_cast<float>(a_col) + t * static_cast<float>(b_col - a_col)));
+    const int row = static_cast<int>(
+        std::lround(static_cast<float>(a_row) + t * static_cast<float>(b_row - a_row)));
     const Cell& cell = cells_[static_cast<std::size_t>(row * cols_ + col)];
     const float depth = a_depth + t * (b_depth - a_depth);
     // Whatever is seen there, static or under a mask but of no segment (a mask spilling over

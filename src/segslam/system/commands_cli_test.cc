@@ -222,18 +222,16 @@ TEST_F(CommandsCli, RunWarnsWhenItsNetworksAreMissing) {
                                            temp_.path() / "absent_backbone.onnx");
   const auto result = runSegslam(
       "--log-level warn run --dataset " + inQuotes(sequence) +
-          " --max-frames 3 --no-map --deterministic " +
-          "--model-config " + inQuotes(segmentation) + " --backbone-config " + inQuotes(backbone) +
-          " --out " + inQuotes(temp_.path() / "run"),
+          " --max-frames 3 --no-map --deterministic --model-config " + inQuotes(segmentation) +
+          " --backbone-config " + inQuotes(backbone) + " --out " + inQuotes(temp_.path() / "run"),
       temp_.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.err.find("[warning] masks: geometric only, the segmentation network is missing"),
             std::string::npos)
       << result.err;
   EXPECT_NE(result.err.find("absent_segmentation.onnx"), std::string::npos) << result.err;
-  EXPECT_NE(
-      result.err.find("[warning] loop candidates: bag of words, the CNN backbone is missing"),
-      std::string::npos)
+  EXPECT_NE(result.err.find("[warning] loop candidates: bag of words, the CNN backbone is missing"),
+            std::string::npos)
       << result.err;
   EXPECT_NE(result.err.find("absent_backbone.onnx"), std::string::npos) << result.err;
 }
@@ -242,8 +240,9 @@ TEST_F(CommandsCli, RunWarnsWhenItsNetworksAreMissing) {
 TEST_F(CommandsCli, MasksOnImagesTooSmallForOpticalFlowAreRefused) {
   const std::string run = "run --dataset " + inQuotes(dataset_) + " --no-map --out " +
                           inQuotes(temp_.path() / "run") + " --seg ";
-  const std::string size = " x 32 pixels (they are carried between frames by optical flow); "
-                           "the camera's are 16 x 12 (--seg none or oracle work on any size)";
+  const std::string size =
+      " x 32 pixels (they are carried between frames by optical flow); "
+      "the camera's are 16 x 12 (--seg none or oracle work on any size)";
   expectError(run + "geometric", "geometric masks need images of at least 32" + size);
   expectError(run + "auto --model-config " +
                   inQuotes(fs::path(SEGSLAM_SOURCE_DIR) / "config/models/espnetv2_voc_384.yaml"),
