@@ -34,7 +34,6 @@ bench_require_dir "$shared/tools"
 /usr/bin/python3 -c "import cv2" 2>/dev/null ||
   bench_fail "/usr/bin/python3 lacks OpenCV, which ../shared/tools needs (scripts/install_deps.sh)"
 suite="$root/out/dev_suite"
-tools="$shared/tools"
 mkdir -p "$suite" "$out" "$root/bench/results"
 
 # name | frames | composite.py options (the base: fr1_xyz_300 or three sweeps of it)
@@ -47,27 +46,11 @@ sequences=(
   "fr1_long_p2_s22_far|898|--people 2 --seed 22 --distance-fraction 0.85,1.0"
 )
 
-make_sequence() {  # name frames options
-  local dir="$suite/$1"
-  [[ -f "$dir/mask.txt" ]] && return
-  local base_options=()
-  if [[ "$2" == 898 ]]; then
-    [[ -f "$suite/long_base/rgb.txt" ]] ||
-      /usr/bin/python3 "$tools/long_base.py" "$shared/data/tum_fr1_xyz_300" "$suite/long_base" \
-        --passes 3 > "$suite/long_base.log"
-    base_options=(--base "$suite/long_base")
-  fi
-  echo "camera_rate.sh: making $1"
-  # shellcheck disable=SC2086
-  /usr/bin/python3 "$tools/composite.py" "${base_options[@]}" --out "$dir" --jpeg 95 $3 \
-    > "$suite/$1.log" 2>&1 || bench_fail "composite.py failed for $1 (see $suite/$1.log)"
-}
-
 # name | dataset folder | whether it has people (oracle masks, map scoring)
 datasets=("walker|$shared/data/tum_fr1_xyz_300_walker|1")
 for sequence in "${sequences[@]}"; do
   IFS='|' read -r name frames options <<< "$sequence"
-  make_sequence "$name" "$frames" "$options"
+  bench_make_composite "$suite" "$name" "$frames" "$options"
   datasets+=("$name|$suite/$name|1")
 done
 datasets+=("static_fr1_xyz_300|$shared/data/tum_fr1_xyz_300|0")

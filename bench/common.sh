@@ -34,3 +34,22 @@ bench_require_segslam() {  # sets segslam
 bench_require_dir() {  # a folder the bench reads, from ../shared
   [[ -d "$1" ]] || bench_fail "$1 not found (set SEGSLAM_SHARED_DIR)"
 }
+
+# Makes a dev-suite composite once into SUITE/NAME (../shared/tools/composite.py --jpeg 95 with
+# OPTIONS): on tum_fr1_xyz_300, or for FRAMES 898 on three sweeps of it (SUITE/long_base).
+bench_make_composite() {  # suite name frames options
+  local suite=$1 name=$2 frames=$3 options=$4
+  [[ -f "$suite/$name/mask.txt" ]] && return
+  local base_options=()
+  if [[ "$frames" == 898 ]]; then
+    [[ -f "$suite/long_base/rgb.txt" ]] ||
+      /usr/bin/python3 "$shared/tools/long_base.py" "$shared/data/tum_fr1_xyz_300" \
+        "$suite/long_base" --passes 3 > "$suite/long_base.log"
+    base_options=(--base "$suite/long_base")
+  fi
+  echo "$bench_name: making $name"
+  # shellcheck disable=SC2086
+  /usr/bin/python3 "$shared/tools/composite.py" "${base_options[@]}" --out "$suite/$name" \
+    --jpeg 95 $options > "$suite/$name.log" 2>&1 ||
+    bench_fail "composite.py failed for $name (see $suite/$name.log)"
+}

@@ -51,22 +51,6 @@ sequences=(
   "h94|1|300|--people 1 --seed 94 --distance-fraction 0.3 --pause 1.5 --speed 0.4:0.8"
 )
 
-make_sequence() {  # name frames options
-  local dir="$suite/$1"
-  [[ -f "$dir/mask.txt" ]] && return
-  local base_options=()
-  if [[ "$2" == 898 ]]; then
-    [[ -f "$suite/long_base/rgb.txt" ]] ||
-      /usr/bin/python3 "$shared/tools/long_base.py" "$shared/data/tum_fr1_xyz_300" \
-        "$suite/long_base" --passes 3 > "$suite/long_base.log"
-    base_options=(--base "$suite/long_base")
-  fi
-  echo "object_tracks.sh: making $1"
-  # shellcheck disable=SC2086
-  /usr/bin/python3 "$shared/tools/composite.py" "${base_options[@]}" --out "$dir" --jpeg 95 $3 \
-    > "$suite/$1.log" 2>&1 || bench_fail "composite.py failed for $1 (see $suite/$1.log)"
-}
-
 builds=("change|$build")
 [[ -n "$base" ]] && builds=("base|$base" "change|$build")
 : > "$out/walkers.txt"
@@ -74,7 +58,7 @@ for entry in "${sequences[@]}"; do
   IFS='|' read -r name walkers frames options <<< "$entry"
   dataset="$shared/data/tum_fr1_xyz_300_walker"
   if [[ -n "$options" ]]; then
-    make_sequence "$name" "$frames" "$options"
+    bench_make_composite "$suite" "$name" "$frames" "$options"
     dataset="$suite/$name"
   fi
   echo "$name $walkers" >> "$out/walkers.txt"
