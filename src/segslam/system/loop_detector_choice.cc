@@ -12,18 +12,26 @@
 
 namespace segslam::system {
 
+namespace {
+
+// The backbone `--loop-detector auto` takes: the one named, else the config's; util::Error when
+// the config's is not found.
+std::string backboneFound(const std::filesystem::path& backbone_config,
+                          const place::CnnBackboneConfig& config,
+                          const std::optional<std::filesystem::path>& backbone_model) {
+  if (backbone_model) return fmt::format("CNN backbone {} (named)", backbone_model->string());
+  const auto model = place::resolveBackboneModelFile(config, backbone_config, std::nullopt);
+  return fmt::format("CNN backbone {}", model.lexically_normal().string());
+}
+
+}  // namespace
+
 AutomaticLoopDetector automaticLoopDetector(
     const std::filesystem::path& backbone_config,
     const std::optional<std::filesystem::path>& backbone_model) {
   const auto config = place::readCnnBackboneConfig(backbone_config);
-  if (backbone_model) {
-    const std::string reason = fmt::format("CNN backbone {} (named)", backbone_model->string());
-    spdlog::info("loop candidates: cnn ({})", reason);
-    return {"cnn", reason};
-  }
   try {
-    const auto model = place::resolveBackboneModelFile(config, backbone_config, std::nullopt);
-    const std::string reason = fmt::format("CNN backbone {}", model.lexically_normal().string());
+    const std::string reason = backboneFound(backbone_config, config, backbone_model);
     spdlog::info("loop candidates: cnn ({})", reason);
     return {"cnn", reason};
   } catch (const util::Error& e) {

@@ -48,18 +48,25 @@ std::string maskSourceName(MaskSource source) {
   return "none";
 }
 
+namespace {
+
+// The network `--seg auto` takes: the one named, else the config's; util::Error when the config's
+// is not found.
+std::string networkFound(const MaskSourceOptions& options,
+                         const segmentation::ModelConfig& config) {
+  if (options.model_file) {
+    return fmt::format("segmentation network {} (named)", options.model_file->string());
+  }
+  const auto model = segmentation::resolveModelFile(config, options.model_config, std::nullopt);
+  return fmt::format("segmentation network {}", model.lexically_normal().string());
+}
+
+}  // namespace
+
 AutomaticMaskSource automaticMaskSource(const MaskSourceOptions& options) {
   const auto config = segmentation::readModelConfig(options.model_config);
-  if (options.model_file) {
-    const std::string reason =
-        fmt::format("segmentation network {} (named)", options.model_file->string());
-    spdlog::info("masks: fused ({})", reason);
-    return {MaskSource::kFused, reason};
-  }
   try {
-    const auto model = segmentation::resolveModelFile(config, options.model_config, std::nullopt);
-    const std::string reason =
-        fmt::format("segmentation network {}", model.lexically_normal().string());
+    const std::string reason = networkFound(options, config);
     spdlog::info("masks: fused ({})", reason);
     return {MaskSource::kFused, reason};
   } catch (const util::Error& e) {
