@@ -43,7 +43,7 @@ std::vector<std::size_t> DynamicObjectTracker::link(
       const double distance = (segments[s].centroid - track.last_centroid).norm();
       // A track not yet seen moving goes only as far as slack unless its person can have got up
       // and walked: seen whole, and their place seen left.
-      const bool still = track.travelled <= options_.slack;
+      const bool still = track.travelled <= options_.slack && !track.came_back;
       const bool may_walk = segments[s].indices.size() >= options_.min_reach_points &&
                             placeLeftFor(track, last_places[t], s);
       const double reach =
@@ -100,6 +100,7 @@ void DynamicObjectTracker::extend(std::size_t track, std::uint64_t keyframe_id, 
     target.keyframe_points += points.size();
     target.last_centroid = segment.centroid;
     target.last_seen = timestamp;
+    if (target.place_left) target.came_back = true;
     target.place_left = false;
   }
   target.points.append(points.select(segment.indices));

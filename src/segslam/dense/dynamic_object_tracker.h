@@ -52,6 +52,10 @@ struct DynamicTrack {
   // A keyframe once showed a place where it was seen empty: it moved, however little its partial
   // views' centroids did.
   bool left_a_place = false;
+  // Seen again after a keyframe showed its place empty: a walker, however little the centroids
+  // of their partial views moved (a walker near the camera, seen in parts, was taken for a
+  // seated person and got a second track).
+  bool came_back = false;
 };
 
 // Follows the dynamic layer's objects over the keyframes, so that one walking person is one

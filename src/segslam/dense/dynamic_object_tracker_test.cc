@@ -170,6 +170,32 @@ TEST(DynamicObjectTracker, ASmallSegmentFarAwayDoesNotMoveAStillTrack) {
   EXPECT_GT(tracks[0].travelled, 1.9f);
 }
 
+// A walker seen in partial views whose centroids moved less than slack, but whose place a
+// keyframe once showed empty, walks: a keyframe that does not see their last place (turned away)
+// continues their track where they walked to. Taken for a seated person, a walker near the camera
+// got a second track (h93: three tracks for two walkers).
+TEST(DynamicObjectTracker, AWalkerWhoOnceLeftAPlaceIsFollowedWhereTheyWalk) {
+  DynamicObjectTracker tracker({});
+  LabelledCloud first;
+  addPerson(first, 0.0f, 2.0f);
+  track(tracker, 0, 0.0, first);
+  track(tracker, 1, 0.5, LabelledCloud());  // their place seen empty
+  LabelledCloud back;
+  addPerson(back, 0.3f, 2.0f);
+  track(tracker, 2, 1.0, back);
+  const auto& tracks = tracker.tracks();
+  ASSERT_EQ(tracks.size(), 1u);
+  ASSERT_LE(tracks[0].travelled, tracker.options().slack);
+  ASSERT_TRUE(tracks[0].left_a_place);
+  LabelledCloud walked;  // 1.2 m on, half a second later
+  addPerson(walked, 1.5f, 2.0f);
+  ASSERT_GE(walked.size(), tracker.options().min_reach_points);
+  const auto segments = segmentByLabel(walked, tracker.options().cell_size, 50);
+  tracker.addKeyFrame(3, 1.5, walked, segments, KeyFrameDepthView());
+  ASSERT_EQ(tracks.size(), 1u);
+  EXPECT_EQ(tracks[0].keyframes, (std::vector<std::uint64_t>{0, 2, 3}));
+}
+
 // The held-out composites' case: a seated person seen in one keyframe; 1.4 s later a walker steps
 // in 2.5 m nearer the camera, in front of them, within the reach of a person who got up. The
 // walker hides the place, so nothing shows the seated person gone: the walker is someone else.
