@@ -58,6 +58,10 @@ void printEvaluation(const system::SequenceRunSummary& s) {
   const auto& ate = s.evaluation->ate.statistics;
   fmt::print("  ATE        rmse {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}) over {} poses\n",
              ate.rmse, ate.mean, ate.median, ate.max, ate.count);
+  if (s.tracked_ate_rmse_m) {
+    fmt::print("             smoothed; as tracked {:.4f} m (CameraTrajectoryTracked.txt)\n",
+               *s.tracked_ate_rmse_m);
+  }
   if (s.ground_truth_frame != io::GroundTruthFrame::kCamera) {
     fmt::print("             ground truth: {}\n",
                io::describeGroundTruthFrame(s.ground_truth_frame));
@@ -257,6 +261,10 @@ void registerRunCommand(CLI::App& app) {
          "the network fall behind, so the ATE is worse)")
       ->excludes(deterministic)
       ->excludes(realtime);
+  run->add_flag(
+      "--no-smoothing", [options](std::int64_t) { options->run.slam.trajectory_smoothing.reset(); },
+      "Write the camera trajectory as tracked, not smoothed under a camera moving at "
+      "near-constant velocity (smoothed runs also write CameraTrajectoryTracked.txt)");
   run->add_option("--seed", options->run.seed, "Seed of the random number generators")
       ->capture_default_str();
   run->add_option("--start-frame", options->start_frame,

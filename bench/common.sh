@@ -26,6 +26,21 @@ bench_parse_build_out() {
   done
 }
 
+# For a script whose options are --build DIR, --out DIR, --runs N and --only NAME[,NAME...]
+# (sets build, out, runs and only; set out and runs to the script's defaults first).
+bench_parse_runs_only() {
+  only=""
+  while [[ $# -gt 0 ]]; do
+    case "$1" in
+      --build) build="$2"; shift 2 ;;
+      --out) out="$2"; shift 2 ;;
+      --runs) runs="$2"; shift 2 ;;
+      --only) only="$2"; shift 2 ;;
+      *) bench_unknown_option "$1" ;;
+    esac
+  done
+}
+
 bench_require_segslam() {  # sets segslam
   segslam="$build/segslam"
   [[ -x "$segslam" ]] || bench_fail "$segslam not built (run ./setup.sh)"

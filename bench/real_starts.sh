@@ -13,16 +13,7 @@ set -euo pipefail
 source "$(dirname "$0")/common.sh"
 out="$root/out/bench_real_starts"
 runs=3
-only=""
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build="$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    --runs) runs="$2"; shift 2 ;;
-    --only) only="$2"; shift 2 ;;
-    *) bench_unknown_option "$1" ;;
-  esac
-done
+bench_parse_runs_only "$@"
 bench_require_segslam
 out=$(realpath -m "$out")
 bonn="$shared/data/rgbd_bonn_crowd_300"

@@ -5,7 +5,7 @@ consecutive tracked frames against the true ones.
     real_starts_steps.py RUN_DIR DATASET --name N --mode M --index I
 
 A step is the camera's motion from one tracked frame to the next frame of the sequence, when that
-one is tracked too. Its error is the distance between the estimated step (the estimate aligned on
+one is tracked too, as tracking accepted it (CameraTrajectoryTracked.txt, before smoothing). Its error is the distance between the estimated step (the estimate aligned on
 the ground truth as for the ATE) and the true one: a pose that jumped where the camera cannot
 have gone shows as an error of decimetres. Needs the segslam Python module (PYTHONPATH=build/python)
 for the ground truth in the camera's frame (a Bonn sequence's markers converted).
@@ -38,8 +38,11 @@ def main():
     summary = json.load(open(os.path.join(args.run_dir, "summary.json")))
     dataset = segslam.TumDataset(args.dataset)
     truth = dataset.ground_truth
-    estimate = segslam.Trajectory.read_tum(os.path.join(args.run_dir, "CameraTrajectory.txt"))
-    aligned = segslam.ate(truth, estimate).aligned_estimate
+    tracked_file = os.path.join(args.run_dir, "CameraTrajectoryTracked.txt")
+    if not os.path.exists(tracked_file):  # a run with --no-smoothing
+        tracked_file = os.path.join(args.run_dir, "CameraTrajectory.txt")
+    tracked = segslam.ate(truth, segslam.Trajectory.read_tum(tracked_file))
+    aligned = tracked.aligned_estimate
     frames = dataset.timestamps
     est_stamps, est_positions = aligned.timestamps, aligned.positions
     true_stamps, true_positions = truth.timestamps, truth.positions
@@ -58,7 +61,7 @@ def main():
         "case": args.name, "mode": args.mode, "index": args.index,
         "frames": summary["frames"], "tracked_frames": summary["tracked_frames"],
         "lost_frames": summary["lost_frames"], "keyframes": summary["keyframes"],
-        "ate_m": summary.get("ate_rmse_m"),
+        "ate_m": summary.get("ate_rmse_m"), "ate_tracked_m": tracked.rmse,
         "tracking_median_ms": summary["tracking_time"]["median_ms"],
         "steps": len(errors), "max_step_m": max(lengths, default=0.0),
         "max_step_error_m": max(errors, default=0.0),

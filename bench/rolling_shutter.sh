@@ -12,16 +12,7 @@ set -euo pipefail
 source "$(dirname "$0")/common.sh"
 out="$root/out/bench_rolling_shutter"
 runs=3
-only=""
-while [[ $# -gt 0 ]]; do
-  case "$1" in
-    --build) build="$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    --runs) runs="$2"; shift 2 ;;
-    --only) only="$2"; shift 2 ;;
-    *) bench_unknown_option "$1" ;;
-  esac
-done
+bench_parse_runs_only "$@"
 bench_require_segslam
 out=$(realpath -m "$out")
 mkdir -p "$out" "$root/bench/results"

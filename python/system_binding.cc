@@ -178,6 +178,12 @@ class System {
     return slam_->cameraTrajectory();
   }
 
+  core::Trajectory trackedTrajectory() {
+    const py::gil_scoped_release unlocked;
+    const std::lock_guard lock(mutex_);
+    return slam_->trackedCameraTrajectory();
+  }
+
   core::Trajectory keyframes() {
     const py::gil_scoped_release unlocked;
     const std::lock_guard lock(mutex_);
@@ -318,7 +324,11 @@ void bindSystem(py::module_& module) {
       .def("finish", &System::finish,
            "Waits for local mapping and loop closing; no frame can be tracked afterwards.")
       .def("trajectory", &System::trajectory,
-           "Every tracked frame at its current (after finish(): final) pose.")
+           "Every tracked frame at its current (after finish(): final) pose, smoothed under a "
+           "camera moving at near-constant velocity (CameraTrajectory.txt of `segslam run`).")
+      .def("tracked_trajectory", &System::trackedTrajectory,
+           "Every tracked frame at its current pose as tracked, not smoothed "
+           "(CameraTrajectoryTracked.txt).")
       .def("keyframes", &System::keyframes, "The keyframes' poses.")
       .def("dense_map", &System::denseMap,
            "The dense map at the keyframes' final poses, with its objects (finishes the run "

@@ -35,6 +35,8 @@ def test_python_run_equals_the_cli_run_pose_for_pose(fr1_xyz, cli_run, python_ru
     assert difference < 1e-7
     cli_keyframes = segslam.Trajectory.read_tum(cli_run / "KeyFrameTrajectory.txt")
     assert max_pose_difference(python_run.keyframes(), cli_keyframes) < 1e-7
+    cli_tracked = segslam.Trajectory.read_tum(cli_run / "CameraTrajectoryTracked.txt")
+    assert max_pose_difference(python_run.tracked_trajectory(), cli_tracked) < 1e-7
 
 
 def test_ate_and_rpe_equal_the_cli_figures(fr1_xyz, cli_run, python_run):

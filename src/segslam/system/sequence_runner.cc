@@ -82,7 +82,7 @@ nlohmann::json timingJson(const TimingSummary& t) {
 // reason, never fails the run: a run of a few frames is shorter than the RPE's delta of 1 s.
 void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
               const std::filesystem::path& out_dir, const core::Trajectory& estimate,
-              SequenceRunSummary& summary) {
+              const core::Trajectory& tracked, SequenceRunSummary& summary) {
   summary.has_ground_truth = dataset.groundTruth().has_value();
   summary.ground_truth_frame = dataset.groundTruthFrame();
   if (!summary.has_ground_truth) {
@@ -102,6 +102,10 @@ void evaluate(const io::TumDataset& dataset, const SequenceRunOptions& options,
     summary.evaluation_not_computed = e.what();
     spdlog::warn("no trajectory evaluation: {}", e.what());
     return;
+  }
+  if (summary.trajectory_smoothed) {
+    summary.tracked_ate_rmse_m =
+        eval::evaluateAte(evaluation.ground_truth, tracked, options.evaluation.ate).statistics.rmse;
   }
   eval::addRpe(evaluation);
   if (!evaluation.rpe) spdlog::warn("RPE not computed: {}", evaluation.rpe_not_computed);
@@ -280,11 +284,19 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     summary.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto trajectory = slam.cameraTrajectory();
+    const auto tracked = slam.trackedCameraTrajectory();
+    summary.trajectory_smoothed = options.slam.trajectory_smoothing.has_value();
     io::writeTumTrajectory(out_dir / "CameraTrajectory.txt", trajectory,
-                           "segslam camera trajectory");
+                           summary.trajectory_smoothed ? "segslam camera trajectory, smoothed"
+                                                       : "segslam camera trajectory");
     io::writeTumTrajectory(out_dir / "KeyFrameTrajectory.txt", slam.keyFrameTrajectory(),
                            "segslam keyframe trajectory");
     summary.outputs = {out_dir / "CameraTrajectory.txt", out_dir / "KeyFrameTrajectory.txt"};
+    if (summary.trajectory_smoothed) {
+      io::writeTumTrajectory(out_dir / "CameraTrajectoryTracked.txt", tracked,
+                             "segslam camera trajectory as tracked, before smoothing");
+      summary.outputs.push_back(out_dir / "CameraTrajectoryTracked.txt");
+    }
     if (dense::MapBuilder* map_builder = pipeline.mapBuilder()) {
       summary.map = buildAndWriteMap(*map_builder, slam.keyFrameTrajectory(), out_dir / "map",
                                      occupancyOptions(options, pipeline.loadedMap()));
@@ -302,7 +314,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     summary.configured_readout_s = dataset.camera().rolling_shutter_readout_s;
     summary.estimated_readout_s = slam.rollingShutterReadout();
     checkLoops(dataset, summary);
-    evaluate(dataset, options, out_dir, trajectory, summary);
+    evaluate(dataset, options, out_dir, trajectory, tracked, summary);
   }
   std::vector<double> tracking_ms;
   std::vector<double> extraction_ms;
@@ -369,8 +381,10 @@ void addEvaluationJson(const SequenceRunSummary& summary, nlohmann::json& json) 
     json["ground_truth"] = {{"frame", io::groundTruthFrameName(summary.ground_truth_frame)},
                             {"poses_of", io::describeGroundTruthFrame(summary.ground_truth_frame)}};
   }
+  json["trajectory_smoothed"] = summary.trajectory_smoothed;
   if (const auto& evaluation = summary.evaluation) {
     json["ate_rmse_m"] = evaluation->ate.statistics.rmse;
+    if (summary.tracked_ate_rmse_m) json["ate_tracked_rmse_m"] = *summary.tracked_ate_rmse_m;
     addRpeJson(evaluation->rpe, evaluation->rpe_not_computed, json);
   } else if (summary.has_ground_truth) {
     json["ate_rmse_m"] = nullptr;

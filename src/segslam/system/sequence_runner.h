@@ -90,8 +90,11 @@ struct SequenceRunSummary {
   // shutter.
   double configured_readout_s = 0.0;
   std::optional<double> estimated_readout_s;
-  // The ATE, and the RPE where it can be computed (evaluation->rpe_not_computed says why not).
+  // The ATE, and the RPE where it can be computed (evaluation->rpe_not_computed says why not), of
+  // the written trajectory: smoothed unless SlamOptions::trajectory_smoothing is none.
   std::optional<eval::TrajectoryEvaluation> evaluation;
+  bool trajectory_smoothed = false;
+  std::optional<double> tracked_ate_rmse_m;  // of the tracked poses, when smoothed
   bool has_ground_truth = false;
   io::GroundTruthFrame ground_truth_frame = io::GroundTruthFrame::kCamera;
   std::string evaluation_not_computed;  // why there is no evaluation

@@ -181,6 +181,12 @@ loop::LoopClosingStats SlamSystem::loopClosingStats() const {
 }
 
 core::Trajectory SlamSystem::cameraTrajectory() const {
+  core::Trajectory tracked = trackedCameraTrajectory();
+  if (!options_.trajectory_smoothing) return tracked;
+  return optim::smoothTrajectory(tracked, *options_.trajectory_smoothing);
+}
+
+core::Trajectory SlamSystem::trackedCameraTrajectory() const {
   std::lock_guard lock(map_.mutex);
   core::Trajectory trajectory;
   for (const auto& record : tracker_.frameRecords()) {

@@ -18,6 +18,7 @@
 #include "segslam/map/map.h"
 #include "segslam/map/map_snapshot.h"
 #include "segslam/mapping/local_mapper.h"
+#include "segslam/optim/trajectory_smoother.h"
 #include "segslam/tracking/tracker.h"
 
 namespace segslam::system {
@@ -49,6 +50,10 @@ struct SlamOptions {
   // Runs local mapping on the calling thread after each keyframe: slower, but every run with the
   // same input gives the same result.
   bool deterministic = false;
+  // cameraTrajectory() smoothed under a camera moving at near-constant velocity; none: the
+  // tracked poses as they are.
+  std::optional<optim::TrajectorySmoothingOptions> trajectory_smoothing =
+      optim::TrajectorySmoothingOptions{};
 };
 
 // Per-frame figures for the run log.
@@ -107,6 +112,8 @@ class SlamSystem {
   [[nodiscard]] const map::MapSessions& sessions() const { return sessions_; }
 
   // Every tracked frame, placed relative to its reference keyframe's final pose.
+  [[nodiscard]] core::Trajectory trackedCameraTrajectory() const;
+  // The tracked trajectory smoothed (SlamOptions::trajectory_smoothing); the tracked one without.
   [[nodiscard]] core::Trajectory cameraTrajectory() const;
   // This session's keyframes (not those of a restored map: their images are not this run's).
   [[nodiscard]] core::Trajectory keyFrameTrajectory() const;

@@ -49,8 +49,12 @@ class StreamingSlam {
   // first); returns the file's size.
   std::uintmax_t saveMap(const std::filesystem::path& file) { return pipeline_.saveMap(file); }
 
-  // Every tracked frame at its final pose; call finish() first for the final poses.
+  // Every tracked frame at its final pose, smoothed as SlamOptions::trajectory_smoothing says
+  // (the tracked poses: trackedCameraTrajectory); call finish() first for the final poses.
   [[nodiscard]] core::Trajectory cameraTrajectory() const { return slam().cameraTrajectory(); }
+  [[nodiscard]] core::Trajectory trackedCameraTrajectory() const {
+    return slam().trackedCameraTrajectory();
+  }
   [[nodiscard]] core::Trajectory keyFrameTrajectory() const { return slam().keyFrameTrajectory(); }
   [[nodiscard]] std::size_t numKeyFrames() const { return slam().numKeyFrames(); }
   [[nodiscard]] std::size_t numMapPoints() const { return slam().numMapPoints(); }
