@@ -92,6 +92,58 @@ struct FrameState {
   Eigen::Quaterniond rotation;
 };
 
+// The solver's cost functions share one kernel and one manifold, which the problem does not own.
+struct SmoothingProblem {
+  SmoothingProblem() : problem(problemOptions()) {}
+
+  static ceres::Problem::Options problemOptions() {
+    ceres::Problem::Options options;
+    options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    return options;
+  }
+
+  ceres::Problem problem;
+  ceres::EigenQuaternionManifold quaternion_manifold;
+};
+
+// Each frame's tracked pose as a measurement of its state, with a Huber kernel.
+void addTrackedPoses(std::vector<FrameState>& states, const TrajectorySmoothingOptions& options,
+                     ceres::LossFunction& robust, SmoothingProblem& smoothing) {
+  const double rotation_sigma_rad = options.rotation_sigma_deg * M_PI / 180.0;
+  for (FrameState& state : states) {
+    smoothing.problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<TrackedPosition, 3, 3>(
+            new TrackedPosition{state.position, options.position_sigma_m}),
+        &robust, state.position.data());
+    smoothing.problem.AddResidualBlock(new ceres::AutoDiffCostFunction<TrackedRotation, 3, 4>(
+                                           new TrackedRotation{state.rotation, rotation_sigma_rad}),
+                                       &robust, state.rotation.coeffs().data());
+    smoothing.problem.SetManifold(state.rotation.coeffs().data(), &smoothing.quaternion_manifold);
+  }
+}
+
+// The accelerations between each three consecutive frames; states[k] is frame first + k.
+void addAccelerations(const std::vector<core::StampedPose>& poses, std::size_t first,
+                      std::vector<FrameState>& states, const TrajectorySmoothingOptions& options,
+                      SmoothingProblem& smoothing) {
+  for (std::size_t k = 1; k + 1 < states.size(); ++k) {
+    const double dt_before = poses[first + k].timestamp - poses[first + k - 1].timestamp;
+    const double dt_after = poses[first + k + 1].timestamp - poses[first + k].timestamp;
+    const double span = 0.5 * (dt_before + dt_after);
+    smoothing.problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<PositionAcceleration, 3, 3, 3, 3>(
+            new PositionAcceleration{dt_before, dt_after, options.acceleration_m_s2 * span}),
+        nullptr, states[k - 1].position.data(), states[k].position.data(),
+        states[k + 1].position.data());
+    smoothing.problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<RotationAcceleration, 3, 4, 4, 4>(new RotationAcceleration{
+            dt_before, dt_after, options.angular_acceleration_rad_s2 * span}),
+        nullptr, states[k - 1].rotation.coeffs().data(), states[k].rotation.coeffs().data(),
+        states[k + 1].rotation.coeffs().data());
+  }
+}
+
 // The smoothed frames [begin, end) of `poses`.
 std::vector<geometry::Pose> smoothWindow(const std::vector<core::StampedPose>& poses,
                                          std::size_t begin, std::size_t end,
@@ -102,44 +154,17 @@ std::vector<geometry::Pose> smoothWindow(const std::vector<core::StampedPose>& p
     states.push_back(
         {poses[i].T_wc.translation(), Eigen::Quaterniond(poses[i].T_wc.linear()).normalized()});
   }
-  ceres::Problem::Options problem_options;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(problem_options);
   ceres::HuberLoss robust(options.robust_sigmas);
-  ceres::EigenQuaternionManifold quaternion_manifold;
-  const double rotation_sigma_rad = options.rotation_sigma_deg * M_PI / 180.0;
-  for (FrameState& state : states) {
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<TrackedPosition, 3, 3>(
-                                 new TrackedPosition{state.position, options.position_sigma_m}),
-                             &robust, state.position.data());
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<TrackedRotation, 3, 4>(
-                                 new TrackedRotation{state.rotation, rotation_sigma_rad}),
-                             &robust, state.rotation.coeffs().data());
-    problem.SetManifold(state.rotation.coeffs().data(), &quaternion_manifold);
-  }
-  for (std::size_t k = 1; k + 1 < states.size(); ++k) {
-    const double dt_before = poses[begin + k].timestamp - poses[begin + k - 1].timestamp;
-    const double dt_after = poses[begin + k + 1].timestamp - poses[begin + k].timestamp;
-    const double span = 0.5 * (dt_before + dt_after);
-    problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<PositionAcceleration, 3, 3, 3, 3>(
-            new PositionAcceleration{dt_before, dt_after, options.acceleration_m_s2 * span}),
-        nullptr, states[k - 1].position.data(), states[k].position.data(),
-        states[k + 1].position.data());
-    problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<RotationAcceleration, 3, 4, 4, 4>(new RotationAcceleration{
-            dt_before, dt_after, options.angular_acceleration_rad_s2 * span}),
-        nullptr, states[k - 1].rotation.coeffs().data(), states[k].rotation.coeffs().data(),
-        states[k + 1].rotation.coeffs().data());
-  }
+  SmoothingProblem smoothing;
+  addTrackedPoses(states, options, robust, smoothing);
+  addAccelerations(poses, begin, states, options, smoothing);
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   solver_options.num_threads = 1;
   solver_options.max_num_iterations = 20;
   solver_options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
-  ceres::Solve(solver_options, &problem, &summary);
+  ceres::Solve(solver_options, &smoothing.problem, &summary);
   std::vector<geometry::Pose> smoothed;
   smoothed.reserve(states.size());
   for (const FrameState& state : states) {
