@@ -60,9 +60,12 @@ int fillRegions(const cv::Mat& interior, const cv::Mat& depth, cv::Mat& blocker,
   return next_value;
 }
 
-bool nearAnyDepth(float depth, const std::vector<float>& object_depths, double tolerance) {
-  return std::any_of(object_depths.begin(), object_depths.end(),
-                     [&](float object) { return std::abs(depth - object) <= tolerance * object; });
+bool nearAnyDepth(float depth, const std::vector<float>& object_depths,
+                  const DepthRefinementOptions& options) {
+  return std::any_of(object_depths.begin(), object_depths.end(), [&](float object) {
+    return std::abs(depth - object) <=
+           std::max(options.object_depth_tolerance * object, options.min_object_depth_tolerance_m);
+  });
 }
 
 // A region at another depth than every known object is background (uncovered inside an old
@@ -91,8 +94,8 @@ cv::Mat objectRegions(const cv::Mat& mask, const cv::Mat& regions, const cv::Mat
   for (int value = 2; value < num_values; ++value) {
     const auto area = static_cast<int>(depths[value].size());
     if (area == 0) continue;
-    if (!object_depths.empty() && !nearAnyDepth(util::medianInPlace(depths[value]), object_depths,
-                                                options.object_depth_tolerance)) {
+    if (!object_depths.empty() &&
+        !nearAnyDepth(util::medianInPlace(depths[value]), object_depths, options)) {
       continue;
     }
     const bool mostly_inside = 2 * inside[value] >= area;

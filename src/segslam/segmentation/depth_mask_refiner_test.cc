@@ -117,6 +117,19 @@ TEST(ObjectDepths, MedianDepthOfEachLargeEnoughPart) {
   EXPECT_FLOAT_EQ(depths[1], 1.5f);
 }
 
+// A person within arm's reach of the camera changes depth by more than a fifth within a few
+// frames: near the camera an object's region may be up to min_object_depth_tolerance_m off.
+TEST(RefineMaskByDepth, NearTheCameraAnObjectMayHaveMovedByTheToleranceInMetres) {
+  cv::Mat depth(kHeight, kWidth, CV_32FC1, cv::Scalar(3.0f));
+  depth(kObject).setTo(0.27f);
+  const cv::Mat mask = maskOf(kObject);
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(mask, depth, 8, {0.36f}) != mask), 0);
+  DepthRefinementOptions share_only;
+  share_only.min_object_depth_tolerance_m = 0.0;
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(mask, depth, 8, {0.36f}, share_only)), 0);
+  EXPECT_EQ(cv::countNonZero(refineMaskByDepth(mask, depth, 8, {0.45f})), 0) << "0.18 m off";
+}
+
 TEST(RefineMaskByDepth, WithoutDepthOrObjectTheMaskIsUnchanged) {
   const cv::Mat mask = maskOf(kObject);
   EXPECT_EQ(cv::countNonZero(refineMaskByDepth(mask, cv::Mat(), 8) != mask), 0);
