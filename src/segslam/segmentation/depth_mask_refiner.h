@@ -16,7 +16,7 @@ struct DepthRefinementOptions {
   // or within this many metres: a person leaning over the camera comes from 0.36 to 0.27 m within
   // six frames, and against a fifth of the depth he had in the network's frame he was dropped as
   // background, the whole person unmasked at once. (Only objects nearer than 0.75 m are concerned:
-  // on the real Bonn crowd, whose people stay 0.84 m away or more, nothing changes.)
+  // in the shared Bonn crowd frames, whose people stay 0.84 m away or more, nothing changes.)
   double object_depth_tolerance = 0.2;
   double min_object_depth_tolerance_m = 0.15;
   // Smaller parts of a mask get no depth of their own (noise, thin limbs at the border).
