@@ -19,6 +19,9 @@ double ReferenceOverlap::share() const {
 
 bool needsKeyFrame(const KeyFrameEvidence& evidence, const KeyFrameDecisionOptions& options) {
   if (evidence.inliers < options.min_inliers) return false;
+  if (evidence.local_map_checked && evidence.checked_inliers < options.min_checked_inliers) {
+    return false;
+  }
   // A queue of keyframes would only be mapped late; a short one is fine for RGB-D.
   const bool can_queue = evidence.mapping_idle || evidence.queued_keyframes < 3;
   if (evidence.frames_since_keyframe >=

@@ -87,5 +87,27 @@ TEST(NeedsKeyFrame, NeverWithTooFewInliersForATrustworthyPose) {
   EXPECT_FALSE(needsKeyFrame(evidence, {}));
 }
 
+// A frame held by few checked points may be held by a person the masks missed: a keyframe would
+// put its new points on him.
+TEST(NeedsKeyFrame, NeverOnAFrameFewCheckedPointsHold) {
+  KeyFrameEvidence evidence = steadyFrame();
+  evidence.tracked_share = 0.2;
+  evidence.inliers = 70;
+  evidence.local_map_checked = true;
+  evidence.checked_inliers = 15;
+  EXPECT_FALSE(needsKeyFrame(evidence, {}));
+  evidence.checked_inliers = 20;
+  EXPECT_TRUE(needsKeyFrame(evidence, {}));
+}
+
+// Before the first keyframe's own mask comes, every point is provisional: the map must grow.
+TEST(NeedsKeyFrame, ALocalMapWithNoCheckedPointYetNeedsNone) {
+  KeyFrameEvidence evidence = steadyFrame();
+  evidence.tracked_share = 0.2;
+  evidence.checked_inliers = 0;
+  evidence.local_map_checked = false;
+  EXPECT_TRUE(needsKeyFrame(evidence, {}));
+}
+
 }  // namespace
 }  // namespace segslam::tracking

@@ -448,6 +448,10 @@ int Tracker::trackedOfReference() const {
 bool Tracker::needNewKeyFrame() const {
   KeyFrameEvidence evidence;
   evidence.inliers = inliers_;
+  evidence.checked_inliers = checkedMatches();
+  evidence.local_map_checked =
+      std::any_of(local_points_.begin(), local_points_.end(),
+                  [](const auto& point) { return !point->bad && !point->provisional; });
   evidence.tracked_share = reference_overlap_.share();
   for (std::size_t i = 0; i < current_.size(); ++i) {
     if (current_.depth[i] <= 0.0f || current_.depth[i] >= current_.camera->close_depth_m) {
