@@ -101,7 +101,7 @@ TEST(NeedsKeyFrame, NeverOnAFrameFewCheckedPointsHold) {
 }
 
 // Before the first keyframe's own mask comes, every point is provisional: the map must grow.
-TEST(NeedsKeyFrame, ALocalMapWithNoCheckedPointYetNeedsNone) {
+TEST(NeedsKeyFrame, BeforeAnyPointIsCheckedTheMapStillGrows) {
   KeyFrameEvidence evidence = steadyFrame();
   evidence.tracked_share = 0.2;
   evidence.checked_inliers = 0;
