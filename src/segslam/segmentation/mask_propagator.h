@@ -25,10 +25,10 @@ class MaskPropagator {
   [[nodiscard]] cv::Mat propagate(const cv::Mat& labels, std::uint64_t source_id) const;
 
   // `mask` (CV_8UC1, computed on frame `source_id`) as seen in the newest frame, each 8-connected
-  // object moved whole, frame by frame, by the median flow over it. Pixel-wise remapping smears an
-  // object along the flow's motion boundaries, where the coarse flow drags the background along
-  // with a walking person; moved whole, an object keeps its shape and size (walker, masks carried
-  // 7 frames: IoU 0.54 against 0.50). Empty as for propagate().
+  // object moved whole, frame by frame, by the flow most of its pixels share. Pixel-wise remapping
+  // smears an object along the flow's motion boundaries, where the coarse flow drags the background
+  // along with a walking person; moved whole, an object keeps its shape and size (walker, masks
+  // carried 7 frames: IoU 0.54 against 0.50). Empty as for propagate().
   [[nodiscard]] cv::Mat moveObjects(const cv::Mat& mask, std::uint64_t source_id) const;
 
   [[nodiscard]] std::uint64_t newestFrame() const { return newest_id_; }

@@ -90,6 +90,31 @@ TEST(MaskPropagator, ObjectsMoveWholeEachByItsOwnMotion) {
   EXPECT_TRUE(propagator.moveObjects(mask, 9).empty());
 }
 
+// A mask that has slipped partly off a moving square: 45 % of it on the square (moving right),
+// 25 % on a background band moving left, 30 % on a still one. The median motion of its pixels is
+// the still part's, so the mask would stay where it is; it follows the square, the motion most of
+// its pixels share.
+TEST(MaskPropagator, AnObjectFollowsTheMotionMostOfItsPixelsShare) {
+  const cv::Mat still = texture({640, 480});
+  const cv::Mat band = texture({640, 140}) / 2 + 64;
+  const cv::Mat pattern = texture({200, 200}) / 2 + 128;
+  const cv::Rect square(100, 140, 200, 200);
+  MaskPropagator propagator;
+  constexpr int kFrames = 6;
+  for (int frame = 0; frame <= kFrames; ++frame) {
+    cv::Mat image = still.clone();
+    shifted(band, -12.0 * frame, 0.0).copyTo(image(cv::Rect(0, 0, 640, 140)));
+    pattern.copyTo(image(square + cv::Point(8 * frame, 0)));
+    propagator.addFrame(frame, image);
+  }
+  cv::Mat mask = cv::Mat::zeros(still.size(), CV_8UC1);
+  mask(cv::Rect(100, 29, 200, 444)).setTo(255);
+  const cv::Mat moved = propagator.moveObjects(mask, 0);
+  ASSERT_EQ(moved.size(), mask.size());
+  const cv::Rect square_now = square + cv::Point(8 * kFrames, 0);
+  EXPECT_GT(cv::countNonZero(moved(square_now)), 0.95 * square_now.area());
+}
+
 TEST(MaskPropagator, NewestFrameIsReturnedAsIsAndUnknownSourcesGiveNothing) {
   const cv::Mat base = texture({160, 120});
   MaskPropagator propagator(/*history=*/2);
