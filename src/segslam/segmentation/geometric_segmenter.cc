@@ -9,6 +9,7 @@
 
 #include "segslam/core/undistortion.h"
 #include "segslam/feature/static_mask.h"
+#include "segslam/segmentation/strongest_corners.h"
 #include "segslam/util/error.h"
 
 namespace segslam::segmentation {
@@ -32,8 +33,7 @@ constexpr float kMaxForwardBackwardPx = 1.0f;
 void trackCorners(const DepthFrame& previous, const DepthFrame& current, int max_corners,
                   std::vector<cv::Point2f>& previous_corners,
                   std::vector<cv::Point2f>& current_corners) {
-  std::vector<cv::Point2f> corners;
-  cv::goodFeaturesToTrack(current.gray, corners, max_corners, 0.01, 10.0);
+  const std::vector<cv::Point2f> corners = strongestCorners(current.gray, max_corners, 0.01, 10.0);
   if (corners.empty()) return;
   std::vector<cv::Point2f> back;
   std::vector<cv::Point2f> forth;
