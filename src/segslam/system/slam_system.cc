@@ -79,7 +79,14 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
   stats.timestamp = timestamp;
   cv::Mat gray;
   cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
-  const cv::Mat mask = feature::dilateDynamicMask(dynamic_mask, options_.mask_dilation_px);
+  // A lost camera looks for the map through the mask. A network output carried on after the
+  // people it marked had left can cover the scene's texture until the next output comes (people9
+  // of bench/soak.sh, two walkers near the camera: 17 frames lost at once); relocalisation places
+  // a frame only on enough verified static map points and within reach of the last pose, which a
+  // person's keypoints do not give.
+  const cv::Mat mask = tracker_.state() == tracking::TrackingState::kLost
+                           ? cv::Mat()
+                           : feature::dilateDynamicMask(dynamic_mask, options_.mask_dilation_px);
   std::vector<cv::KeyPoint> keypoints;
   cv::Mat descriptors;
   extractor_.extract(gray, mask, keypoints, descriptors);

@@ -86,5 +86,28 @@ TEST(SlamSystem, DoesNotRelocaliseWhereTheCameraCannotHaveGone) {
   EXPECT_GT(teleported.jump_pose_error_m, 1e8);  // the first frame after the jump has no pose
 }
 
+// A mask that covers the whole view for a second (a network output carried on after the people
+// it marked had left): the first frame under it loses track, having no keypoints, but a lost
+// camera looks for the map through the mask, so the next frame is placed again. Relocalisation
+// is the safe place for it: only verified static map points and a reachable pose place a frame.
+TEST(SlamSystem, ALostCameraLooksForTheMapThroughTheMask) {
+  const auto dataset = io::TumDataset::open(testing::sharedSequence(testing::noisyRoomLap(300)));
+  SlamOptions options;
+  options.deterministic = true;
+  options.loop_closing = false;
+  SlamSystem slam(dataset.camera(), options);
+  std::vector<tracking::TrackingState> states;
+  for (std::size_t i = 0; i < 150; ++i) {
+    const auto frame = dataset.loadFrame(i, {.mask = false, .labels = false, .instances = false});
+    const cv::Mat stale_mask =
+        i >= 120 ? cv::Mat(frame.rgb.size(), CV_8UC1, cv::Scalar(255)) : cv::Mat();
+    states.push_back(
+        slam.processFrame(static_cast<double>(i) / 30.0, frame.rgb, frame.depth, stale_mask).state);
+  }
+  EXPECT_EQ(states[119], tracking::TrackingState::kOk);
+  EXPECT_EQ(states[120], tracking::TrackingState::kLost);
+  EXPECT_EQ(states[121], tracking::TrackingState::kOk);
+}
+
 }  // namespace
 }  // namespace segslam::system
