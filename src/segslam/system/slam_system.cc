@@ -79,26 +79,34 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
   stats.timestamp = timestamp;
   cv::Mat gray;
   cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
-  // A lost camera looks for the map through the mask. A network output carried on after the
-  // people it marked had left can cover the scene's texture until the next output comes (people9
-  // of bench/soak.sh, two walkers near the camera: 17 frames lost at once); relocalisation places
-  // a frame only on enough verified static map points and within reach of the last pose, which a
-  // person's keypoints do not give.
-  const cv::Mat mask = tracker_.state() == tracking::TrackingState::kLost
-                           ? cv::Mat()
-                           : feature::dilateDynamicMask(dynamic_mask, options_.mask_dilation_px);
-  std::vector<cv::KeyPoint> keypoints;
-  cv::Mat descriptors;
-  extractor_.extract(gray, mask, keypoints, descriptors);
+  // The camera looks for the map through the mask when the mask loses it. A network output
+  // carried on after the people it marked had left can cover the scene's texture until the next
+  // output comes (people9 of bench/soak.sh, two walkers near the camera: 17 frames lost at once);
+  // a frame that cannot be tracked outside the mask is tried again on the whole image, and a lost
+  // camera's frames are taken whole at once. A person's keypoints hardly give a pose: tracking
+  // searches the map's static points, and relocalisation places a frame only on enough of them
+  // that keyframes' own masks verified, within reach of the last pose.
+  const bool lost = tracker_.state() == tracking::TrackingState::kLost;
+  const cv::Mat mask =
+      lost ? cv::Mat() : feature::dilateDynamicMask(dynamic_mask, options_.mask_dilation_px);
+  auto frameWithout = [&](const cv::Mat& frame_mask) {
+    std::vector<cv::KeyPoint> keypoints;
+    cv::Mat descriptors;
+    extractor_.extract(gray, frame_mask, keypoints, descriptors);
+    stats.keypoints = static_cast<int>(keypoints.size());
+    map::Frame frame(stats.frame_id, timestamp, std::move(keypoints), std::move(descriptors),
+                     depth_m, frame_mask, camera_);
+    // Shared, not copied: the caller hands a fresh image per frame.
+    if (loop_closer_ && options_.loop_backbone) frame.image = bgr;
+    return frame;
+  };
+  map::Frame frame = frameWithout(mask);
   stats.extraction_ms = util::millisecondsSince(start);
-  stats.keypoints = static_cast<int>(keypoints.size());
-  map::Frame frame(stats.frame_id, timestamp, std::move(keypoints), std::move(descriptors), depth_m,
-                   mask, camera_);
-  // Shared, not copied: the caller hands a fresh image per frame.
-  if (loop_closer_ && options_.loop_backbone) frame.image = bgr;
   {
     std::lock_guard lock(map_.mutex);
-    const auto result = tracker_.track(std::move(frame));
+    const auto result = mask.empty()
+                            ? tracker_.track(std::move(frame))
+                            : tracker_.track(std::move(frame), [&] { return frameWithout({}); });
     stats.state = result.state;
     stats.matches = result.matches;
     stats.keyframe = result.new_keyframe;

@@ -90,7 +90,7 @@ TEST(SlamSystem, DoesNotRelocaliseWhereTheCameraCannotHaveGone) {
 // it marked had left): the first frame under it loses track, having no keypoints, but a lost
 // camera looks for the map through the mask, so the next frame is placed again. Relocalisation
 // is the safe place for it: only verified static map points and a reachable pose place a frame.
-TEST(SlamSystem, ALostCameraLooksForTheMapThroughTheMask) {
+TEST(SlamSystem, AFrameTheMaskLosesIsTriedWithoutIt) {
   const auto dataset = io::TumDataset::open(testing::sharedSequence(testing::noisyRoomLap(300)));
   SlamOptions options;
   options.deterministic = true;
@@ -104,9 +104,11 @@ TEST(SlamSystem, ALostCameraLooksForTheMapThroughTheMask) {
     states.push_back(
         slam.processFrame(static_cast<double>(i) / 30.0, frame.rgb, frame.depth, stale_mask).state);
   }
-  EXPECT_EQ(states[119], tracking::TrackingState::kOk);
-  EXPECT_EQ(states[120], tracking::TrackingState::kLost);
-  EXPECT_EQ(states[121], tracking::TrackingState::kOk);
+  // The stale mask covers the whole view from frame 120 on: every frame loses the camera through
+  // it and is placed without it.
+  for (std::size_t i = 119; i < states.size(); ++i) {
+    EXPECT_EQ(states[i], tracking::TrackingState::kOk) << "frame " << i;
+  }
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ Tracker::Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options,
   if (vocabulary) keyframe_database_.emplace(std::move(vocabulary));
 }
 
-TrackingResult Tracker::track(map::Frame frame) {
+TrackingResult Tracker::track(map::Frame frame, const std::function<map::Frame()>& without_mask) {
   last_ = std::move(current_);
   current_ = std::move(frame);
   if (map_.corrections() != seen_corrections_) {
@@ -59,22 +59,13 @@ TrackingResult Tracker::track(map::Frame frame) {
     return result;
   }
 
-  // Rows read while the camera moved as it did over the last frames: a first placement of the
-  // keypoints for the search, refined once the frame's own motion is known.
-  if (velocity_ && readout() != 0.0) {
-    current_.compensateRollingShutter(*velocity_, velocity_dt_, readout());
+  Placement placement = place(!without_mask);
+  if (placement == Placement::kNone && without_mask) {
+    current_ = without_mask();
+    placement = place(true);
   }
-  predicted_T_cw_.reset();
-  const bool tracked = state_ == TrackingState::kOk &&
-                       ((velocity_ && trackWithMotionModel()) || trackReferenceKeyFrame());
-  if (!tracked) predicted_T_cw_.reset();
-  // A frame that loses track tries relocalisation at once: the camera may have been carried
-  // elsewhere, and the frame is as good a query as the next.
-  const bool relocalised = !tracked && relocalise();
-  // A relocalised pose must be within reach of the last tracked one as much as a tracked pose:
-  // a lost frame's descriptors can match a person or a look-alike place anywhere in the map.
-  const bool ok = (tracked || relocalised) && trackLocalMap() && movedPlausibly();
-  if (ok && tracked) refineForRollingShutter();
+  const bool ok = placement != Placement::kNone;
+  const bool relocalised = placement == Placement::kRelocalised;
 
   if (ok) {
     state_ = TrackingState::kOk;
@@ -105,6 +96,30 @@ TrackingResult Tracker::track(map::Frame frame) {
   result.state = state_;
   result.matches = inliers_;
   return result;
+}
+
+Tracker::Placement Tracker::place(bool may_relocalise) {
+  // Rows read while the camera moved as it did over the last frames: a first placement of the
+  // keypoints for the search, refined once the frame's own motion is known.
+  if (velocity_ && readout() != 0.0) {
+    current_.compensateRollingShutter(*velocity_, velocity_dt_, readout());
+  }
+  predicted_T_cw_.reset();
+  const bool tracked = state_ == TrackingState::kOk &&
+                       ((velocity_ && trackWithMotionModel()) || trackReferenceKeyFrame());
+  if (tracked && trackLocalMap() && movedPlausibly()) {
+    refineForRollingShutter();
+    return Placement::kTracked;
+  }
+  // A frame that loses track tries relocalisation at once: the camera may have been carried
+  // elsewhere, and the frame is as good a query as the next. A relocalised pose must be within
+  // reach of the last tracked one as much as a tracked pose: a lost frame's descriptors can
+  // match a person or a look-alike place anywhere in the map.
+  predicted_T_cw_.reset();
+  if (!may_relocalise || !relocalise() || !trackLocalMap() || !movedPlausibly()) {
+    return Placement::kNone;
+  }
+  return Placement::kRelocalised;
 }
 
 bool Tracker::movedPlausibly() const {

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -79,7 +80,11 @@ class Tracker {
   Tracker(map::Map& map, KeyFrameSink& sink, TrackerOptions options = {},
           std::shared_ptr<const place::Vocabulary> vocabulary = nullptr);
 
-  TrackingResult track(map::Frame frame);
+  // without_mask, when given, makes the frame again with keypoints from the whole image: a frame
+  // that the dynamic mask leaves too little static texture to track is tried once more with it
+  // (a stale mask can cover the scene after its people left). Relocalisation is tried on that
+  // one only.
+  TrackingResult track(map::Frame frame, const std::function<map::Frame()>& without_mask = {});
 
   // The map was restored from a file before the first frame: tracking starts lost and
   // relocalises into it instead of starting a new map, wherever the camera is.
@@ -108,6 +113,10 @@ class Tracker {
 
  private:
   bool initialise();
+  enum class Placement { kNone, kTracked, kRelocalised };
+  // Places current_ against the map: tracked from the last frame or the reference keyframe, or
+  // relocalised when allowed; refined on the local map and within the camera's reach.
+  Placement place(bool may_relocalise);
   bool trackWithMotionModel();
   bool trackReferenceKeyFrame();
   bool relocalise();
