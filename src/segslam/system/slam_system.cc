@@ -89,7 +89,7 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
   const bool lost = tracker_.state() == tracking::TrackingState::kLost;
   const cv::Mat mask =
       lost ? cv::Mat() : feature::dilateDynamicMask(dynamic_mask, options_.mask_dilation_px);
-  auto frameWithout = [&](const cv::Mat& frame_mask) {
+  auto frameOutside = [&](const cv::Mat& frame_mask) {
     std::vector<cv::KeyPoint> keypoints;
     cv::Mat descriptors;
     extractor_.extract(gray, frame_mask, keypoints, descriptors);
@@ -100,13 +100,13 @@ FrameStats SlamSystem::processFrame(double timestamp, const cv::Mat& bgr, const 
     if (loop_closer_ && options_.loop_backbone) frame.image = bgr;
     return frame;
   };
-  map::Frame frame = frameWithout(mask);
+  map::Frame frame = frameOutside(mask);
   stats.extraction_ms = util::millisecondsSince(start);
   {
     std::lock_guard lock(map_.mutex);
     const auto result = mask.empty()
                             ? tracker_.track(std::move(frame))
-                            : tracker_.track(std::move(frame), [&] { return frameWithout({}); });
+                            : tracker_.track(std::move(frame), [&] { return frameOutside({}); });
     stats.state = result.state;
     stats.matches = result.matches;
     stats.keyframe = result.new_keyframe;

@@ -87,9 +87,8 @@ TEST(SlamSystem, DoesNotRelocaliseWhereTheCameraCannotHaveGone) {
 }
 
 // A mask that covers the whole view for a second (a network output carried on after the people
-// it marked had left): the first frame under it loses track, having no keypoints, but a lost
-// camera looks for the map through the mask, so the next frame is placed again. Relocalisation
-// is the safe place for it: only verified static map points and a reachable pose place a frame.
+// it marked had left): no frame under it has a keypoint outside it, so each is tried again on
+// the whole image, where tracking searches only the map's static points.
 TEST(SlamSystem, AFrameTheMaskLosesIsTriedWithoutIt) {
   const auto dataset = io::TumDataset::open(testing::sharedSequence(testing::noisyRoomLap(300)));
   SlamOptions options;
@@ -104,8 +103,6 @@ TEST(SlamSystem, AFrameTheMaskLosesIsTriedWithoutIt) {
     states.push_back(
         slam.processFrame(static_cast<double>(i) / 30.0, frame.rgb, frame.depth, stale_mask).state);
   }
-  // The stale mask covers the whole view from frame 120 on: every frame loses the camera through
-  // it and is placed without it.
   for (std::size_t i = 119; i < states.size(); ++i) {
     EXPECT_EQ(states[i], tracking::TrackingState::kOk) << "frame " << i;
   }

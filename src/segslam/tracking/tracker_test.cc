@@ -40,6 +40,19 @@ class TrackerOnARoomLap : public ::testing::Test {
     return tracker.track(std::move(frame));
   }
 
+  // Tracks the lap's first `count` frames, each of which must be tracked.
+  void trackFirst(Tracker& tracker, int count) {
+    for (int index = 0; index < count; ++index) {
+      ASSERT_EQ(track(tracker, index).state, TrackingState::kOk) << "frame " << index;
+    }
+  }
+
+  // Frame `index` with its depth but no keypoint: as a mask covering the whole view leaves it.
+  map::Frame keypointlessFrame(int index) {
+    return map::Frame(static_cast<std::uint64_t>(index), sequence_.timestamp(index), {}, cv::Mat(),
+                      frameAt(index).depth_image, cv::Mat(), camera_);
+  }
+
   synth::SyntheticSequence sequence_;
   feature::OrbExtractor extractor_;
   std::shared_ptr<const map::FrameCamera> camera_ = std::make_shared<map::FrameCamera>(
@@ -54,9 +67,7 @@ class TrackerOnARoomLap : public ::testing::Test {
 // its pose is recorded and resolved like any other.
 TEST_F(TrackerOnARoomLap, FrameWhosePointsNoLiveKeyFrameObservesIsRecordedAgainstTheLastReference) {
   Tracker tracker(map_, sink_);
-  for (int index = 0; index < 4; ++index) {
-    ASSERT_EQ(track(tracker, index).state, TrackingState::kOk) << "frame " << index;
-  }
+  ASSERT_NO_FATAL_FAILURE(trackFirst(tracker, 4));
   const map::KeyFrame* last_reference = tracker.frameRecords().back().reference;
   const std::size_t records = tracker.frameRecords().size();
   for (const auto& keyframe : map_.keyFrames()) keyframe->bad = true;
@@ -75,16 +86,12 @@ TEST_F(TrackerOnARoomLap, FrameWhosePointsNoLiveKeyFrameObservesIsRecordedAgains
 // masks missed, and would place the camera by him.
 TEST_F(TrackerOnARoomLap, RelocalisesOnlyOnPointsAnOwnMaskHasChecked) {
   Tracker tracker(map_, sink_);
-  for (int index = 0; index < 3; ++index) {
-    ASSERT_EQ(track(tracker, index).state, TrackingState::kOk) << "frame " << index;
-  }
+  ASSERT_NO_FATAL_FAILURE(trackFirst(tracker, 3));
   // A frame without features loses track; the next one, as the camera comes back, must be
   // relocalised (the motion model is gone).
-  map::Frame blank(3, sequence_.timestamp(3), {}, cv::Mat(), frameAt(3).depth_image, cv::Mat(),
-                   camera_);
   {
     std::lock_guard lock(map_.mutex);
-    ASSERT_EQ(tracker.track(std::move(blank)).state, TrackingState::kLost);
+    ASSERT_EQ(tracker.track(keypointlessFrame(3)).state, TrackingState::kLost);
   }
   // The map's points are all provisional: no keyframe's own mask has been applied.
   EXPECT_EQ(track(tracker, 4).state, TrackingState::kLost);
@@ -98,13 +105,9 @@ TEST_F(TrackerOnARoomLap, RelocalisesOnlyOnPointsAnOwnMaskHasChecked) {
 // whole image before the camera is called lost.
 TEST_F(TrackerOnARoomLap, AFrameTheMaskLeavesNothingToTrackIsTriedOnTheWholeImage) {
   Tracker tracker(map_, sink_);
-  for (int index = 0; index < 4; ++index) {
-    ASSERT_EQ(track(tracker, index).state, TrackingState::kOk) << "frame " << index;
-  }
-  map::Frame masked_out(4, sequence_.timestamp(4), {}, cv::Mat(), frameAt(4).depth_image, cv::Mat(),
-                        camera_);
+  ASSERT_NO_FATAL_FAILURE(trackFirst(tracker, 4));
   std::lock_guard lock(map_.mutex);
-  const TrackingResult result = tracker.track(std::move(masked_out), [this] { return frameAt(4); });
+  const TrackingResult result = tracker.track(keypointlessFrame(4), [this] { return frameAt(4); });
   EXPECT_EQ(result.state, TrackingState::kOk);
   EXPECT_GT(tracker.currentFrame().size(), 0u);
   EXPECT_EQ(tracker.frameRecords().size(), 5u);
