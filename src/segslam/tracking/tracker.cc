@@ -477,9 +477,12 @@ bool Tracker::needNewKeyFrame() const {
   evidence.frames_since_keyframe = current_.id - last_keyframe_frame_id_;
   evidence.mapping_idle = sink_.isIdle();
   evidence.queued_keyframes = sink_.queuedKeyFrames();
-  spdlog::debug("frame {}: reference keyframe {}: {} of {} points tracked, close {} / {}",
-                current_.id, reference_keyframe_->id, reference_overlap_.tracked(),
-                reference_overlap_.best(), evidence.tracked_close, evidence.untracked_close);
+  spdlog::debug(
+      "frame {}: reference keyframe {}: {} of {} points tracked, close {} / {}, {} of {} inliers "
+      "checked, mapping {}",
+      current_.id, reference_keyframe_->id, reference_overlap_.tracked(), reference_overlap_.best(),
+      evidence.tracked_close, evidence.untracked_close, evidence.checked_inliers, evidence.inliers,
+      evidence.mapping_idle ? "idle" : "busy");
   return needsKeyFrame(evidence, options_.keyframes);
 }
 
