@@ -78,8 +78,8 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   geometry::Pose T_c_parent = geometry::Pose::Identity();
   std::set<KeyFrame*, KeyFrameIdLess> children;
 
-  // Bookkeeping of the local map and local BA (which frame/keyframe last used this one).
-  std::uint64_t local_map_frame = UINT64_MAX;
+  // Bookkeeping of the local map and local BA (which search/keyframe last used this one).
+  std::uint64_t local_map_search = UINT64_MAX;
   std::uint64_t ba_local_keyframe = UINT64_MAX;
   std::uint64_t ba_fixed_keyframe = UINT64_MAX;
 

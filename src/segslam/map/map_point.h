@@ -63,9 +63,10 @@ class MapPoint {
   // that saw it, nor for being merged with a new point (the restored point survives the merge).
   bool restored = false;
   std::shared_ptr<MapPoint> replaced_by;
-  // Tracking bookkeeping: which frame last looked for / found this point.
-  std::uint64_t last_seen_frame = UINT64_MAX;
-  std::uint64_t track_reference_frame = UINT64_MAX;
+  // Tracking bookkeeping: which local-map search (Tracker::trackLocalMap) last found this point /
+  // took it into the local map.
+  std::uint64_t seen_in_search = UINT64_MAX;
+  std::uint64_t local_map_search = UINT64_MAX;
   // Frames whose depth saw through the point (tracking::pointsSeenThrough).
   int seen_through = 0;
   // Keyframes whose own segmentation showed the point on a moving object

@@ -330,6 +330,7 @@ double Tracker::readout() {
 }
 
 bool Tracker::trackLocalMap() {
+  ++local_map_searches_;
   updateLocalKeyFrames();
   updateLocalPoints();
   searchLocalMap();
@@ -361,8 +362,10 @@ void Tracker::updateLocalKeyFrames() {
   if (votes.empty()) return;
   local_keyframes_.clear();
   auto add = [&](map::KeyFrame* keyframe) {
-    if (keyframe == nullptr || keyframe->bad || keyframe->local_map_frame == current_.id) return;
-    keyframe->local_map_frame = current_.id;
+    if (keyframe == nullptr || keyframe->bad || keyframe->local_map_search == local_map_searches_) {
+      return;
+    }
+    keyframe->local_map_search = local_map_searches_;
     local_keyframes_.push_back(keyframe->shared_from_this());
   };
   map::KeyFrame* best = nullptr;
@@ -394,8 +397,8 @@ void Tracker::updateLocalPoints() {
   local_points_.clear();
   for (const auto& keyframe : local_keyframes_) {
     for (const auto& [index, point] : keyframe->validMapPoints()) {
-      if (point->track_reference_frame == current_.id) continue;
-      point->track_reference_frame = current_.id;
+      if (point->local_map_search == local_map_searches_) continue;
+      point->local_map_search = local_map_searches_;
       local_points_.push_back(point);
     }
   }
@@ -405,11 +408,11 @@ int Tracker::searchLocalMap() {
   for (const auto& point : current_.map_points) {
     if (!point || point->bad) continue;
     point->increaseVisible();
-    point->last_seen_frame = current_.id;
+    point->seen_in_search = local_map_searches_;
   }
   std::vector<ProjectedPoint> projections;
   for (const auto& point : local_points_) {
-    if (point->bad || point->last_seen_frame == current_.id) continue;
+    if (point->bad || point->seen_in_search == local_map_searches_) continue;
     auto projected = projectIntoFrame(point, current_, 0.5);
     if (!projected) continue;
     point->increaseVisible();

@@ -98,6 +98,8 @@ class Tracker {
 
   [[nodiscard]] TrackingState state() const { return state_; }
   [[nodiscard]] const map::Frame& currentFrame() const { return current_; }
+  // The map points the last local-map search looked for.
+  [[nodiscard]] std::size_t localMapPoints() const { return local_points_.size(); }
   // The rolling-shutter readout estimated so far (ReadoutEstimator); empty before the first frame
   // or for a global-shutter camera.
   [[nodiscard]] std::optional<double> rollingShutterReadout() const;
@@ -164,6 +166,10 @@ class Tracker {
   std::uint64_t last_relocalisation_frame_id_ = 0;
   std::vector<std::shared_ptr<map::KeyFrame>> local_keyframes_;
   std::vector<std::shared_ptr<map::MapPoint>> local_points_;
+  // Tags the keyframes and points of one local-map search: a frame is searched again when its
+  // first placement fails (relocalisation, the whole image), and tags by frame would then leave
+  // it an empty local map.
+  std::uint64_t local_map_searches_ = 0;
   std::vector<std::shared_ptr<map::MapPoint>> temporary_points_;
   int inliers_ = 0;
   ReferenceOverlap reference_overlap_;

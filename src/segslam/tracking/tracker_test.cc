@@ -53,6 +53,21 @@ class TrackerOnARoomLap : public ::testing::Test {
                       frameAt(index).depth_image, cv::Mat(), camera_);
   }
 
+  // Frame `index` with `count` of its keypoints, spread over the image: enough for the motion
+  // model, too few for the local map.
+  map::Frame sparseFrame(int index, int count) {
+    const map::Frame whole = frameAt(index);
+    const std::size_t stride = whole.size() / static_cast<std::size_t>(count);
+    std::vector<cv::KeyPoint> keypoints;
+    cv::Mat descriptors;
+    for (std::size_t i = 0; keypoints.size() < static_cast<std::size_t>(count); i += stride) {
+      keypoints.push_back(whole.keypoints[i]);
+      descriptors.push_back(whole.descriptors.row(static_cast<int>(i)));
+    }
+    return map::Frame(static_cast<std::uint64_t>(index), sequence_.timestamp(index),
+                      std::move(keypoints), descriptors, whole.depth_image, cv::Mat(), camera_);
+  }
+
   synth::SyntheticSequence sequence_;
   feature::OrbExtractor extractor_;
   std::shared_ptr<const map::FrameCamera> camera_ = std::make_shared<map::FrameCamera>(
@@ -111,6 +126,19 @@ TEST_F(TrackerOnARoomLap, AFrameTheMaskLeavesNothingToTrackIsTriedOnTheWholeImag
   EXPECT_EQ(result.state, TrackingState::kOk);
   EXPECT_GT(tracker.currentFrame().size(), 0u);
   EXPECT_EQ(tracker.frameRecords().size(), 5u);
+}
+
+// The frame's first placement searched the local map and fell short; the whole-image frame,
+// with the same frame number, must get a local map of its own to search.
+TEST_F(TrackerOnARoomLap, AFrameTriedAgainSearchesTheWholeLocalMapAgain) {
+  Tracker tracker(map_, sink_);
+  ASSERT_NO_FATAL_FAILURE(trackFirst(tracker, 4));
+  const std::size_t local_points = tracker.localMapPoints();
+  ASSERT_GT(local_points, 0u);
+  std::lock_guard lock(map_.mutex);
+  const TrackingResult result = tracker.track(sparseFrame(4, 46), [this] { return frameAt(4); });
+  EXPECT_EQ(result.state, TrackingState::kOk);
+  EXPECT_EQ(tracker.localMapPoints(), local_points);
 }
 
 }  // namespace
