@@ -1,5 +1,7 @@
 #include "segslam/dense/dynamic_object_tracker.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -102,6 +104,9 @@ void DynamicObjectTracker::extend(std::size_t track, std::uint64_t keyframe_id, 
     target.last_seen = timestamp;
     if (target.place_left) target.came_back = true;
     target.place_left = false;
+    // Only the segment that places the track: a blob joining a seated person by touching them
+    // stood where a keyframe had seen the room empty.
+    if (!target.arrived) target.arrived = seenEmptyBefore(segment.centroid);
   }
   target.points.append(points.select(segment.indices));
 }
@@ -109,7 +114,7 @@ void DynamicObjectTracker::extend(std::size_t track, std::uint64_t keyframe_id, 
 void DynamicObjectTracker::addKeyFrame(std::uint64_t keyframe_id, double timestamp,
                                        const LabelledCloud& points,
                                        const std::vector<LabelSegment>& segments,
-                                       const KeyFrameDepthView& view) {
+                                       KeyFrameDepthView view) {
   std::vector<PlaceSight> last_places;
   for (DynamicTrack& track : tracks_) {
     last_places.push_back(view.look(track.last_centroid));
@@ -150,7 +155,18 @@ void DynamicObjectTracker::addKeyFrame(std::uint64_t keyframe_id, double timesta
       created.instance = segment.instance;
     }
     extend(track_of[s], keyframe_id, timestamp, points, segment);
+    spdlog::debug(
+        "dynamic objects: keyframe {} segment of {} points at ({:.2f}, {:.2f}, {:.2f}) -> track {}",
+        keyframe_id, segment.indices.size(), segment.centroid.x(), segment.centroid.y(),
+        segment.centroid.z(), track_of[s]);
   }
+  earlier_views_.push_back(std::move(view));
+}
+
+bool DynamicObjectTracker::seenEmptyBefore(const Eigen::Vector3f& place) const {
+  return std::any_of(earlier_views_.begin(), earlier_views_.end(), [&](const auto& view) {
+    return view.look(place).kind == PlaceSight::Kind::kEmpty;
+  });
 }
 
 }  // namespace segslam::dense

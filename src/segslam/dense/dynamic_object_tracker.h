@@ -56,6 +56,9 @@ struct DynamicTrack {
   // of their partial views moved (a walker near the camera, seen in parts, was taken for a
   // seated person and got a second track).
   bool came_back = false;
+  // A keyframe before it was seen showed one of the places that placed it (a segment linked to it,
+  // not one joining it by touching) empty: it walked there.
+  bool arrived = false;
 };
 
 // Follows the dynamic layer's objects over the keyframes, so that one walking person is one
@@ -72,7 +75,7 @@ class DynamicObjectTracker {
   // Keyframes in time order; `segments` from segmentByLabel of `points` (world frame) with
   // options().cell_size; `view` the keyframe's view of both layers with these segments.
   void addKeyFrame(std::uint64_t keyframe_id, double timestamp, const LabelledCloud& points,
-                   const std::vector<LabelSegment>& segments, const KeyFrameDepthView& view);
+                   const std::vector<LabelSegment>& segments, KeyFrameDepthView view);
 
   [[nodiscard]] const std::vector<DynamicTrack>& tracks() const { return tracks_; }
   [[nodiscard]] const DynamicTrackingOptions& options() const { return options_; }
@@ -92,8 +95,12 @@ class DynamicObjectTracker {
   void extend(std::size_t track, std::uint64_t keyframe_id, double timestamp,
               const LabelledCloud& points, const LabelSegment& segment);
 
+  // Whether a keyframe before this one showed `place` empty.
+  [[nodiscard]] bool seenEmptyBefore(const Eigen::Vector3f& place) const;
+
   DynamicTrackingOptions options_;
   std::vector<DynamicTrack> tracks_;
+  std::vector<KeyFrameDepthView> earlier_views_;
 };
 
 }  // namespace segslam::dense

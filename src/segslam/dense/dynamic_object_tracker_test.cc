@@ -58,6 +58,8 @@ TEST(DynamicObjectTracker, OneWalkingPersonIsOneTrack) {
   ASSERT_EQ(tracker.tracks().size(), 1u);
   EXPECT_EQ(tracker.tracks()[0].keyframes.size(), 10u);
   EXPECT_EQ(tracker.tracks()[0].instance, 0);
+  // Each place of theirs after the first showed the wall in the keyframe before.
+  EXPECT_TRUE(tracker.tracks()[0].arrived);
 }
 
 TEST(DynamicObjectTracker, TwoPeopleApartAreTwoTracksEvenWhenSplitBySomething) {
@@ -236,6 +238,8 @@ TEST(DynamicObjectTracker, ABlobJoiningASeatedPersonDoesNotMoveTheirTrack) {
   ASSERT_EQ(tracks.size(), 1u);
   EXPECT_EQ(tracks[0].keyframes.size(), 4u);
   EXPECT_LT(tracks[0].travelled, 0.1f);
+  // The blob stands where the first keyframes saw the wall; the seated person never did.
+  EXPECT_FALSE(tracks[0].arrived);
 }
 
 }  // namespace

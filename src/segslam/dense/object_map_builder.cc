@@ -1,5 +1,7 @@
 #include "segslam/dense/object_map_builder.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <unordered_map>
 
@@ -103,22 +105,55 @@ std::vector<MapObject> ObjectMapBuilder::staticObjects(const LabelledCloud& stat
   return objects;
 }
 
-std::vector<MapObject> ObjectMapBuilder::dynamicObjects(double voxel_size) const {
+double ObjectMapBuilder::shareOnStatic(
+    const LabelledCloud& points, const std::unordered_set<std::uint64_t>& static_cells) const {
+  if (points.empty()) return 0.0;
+  std::size_t on_static = 0;
+  for (const Eigen::Vector3f& point : points.points) {
+    const Eigen::Vector3i cell = cellOf(point, options_.cell_size);
+    bool near = false;
+    for (int dx = -1; dx <= 1 && !near; ++dx) {
+      for (int dy = -1; dy <= 1 && !near; ++dy) {
+        for (int dz = -1; dz <= 1 && !near; ++dz) {
+          near = static_cells.contains(packCell(cell + Eigen::Vector3i(dx, dy, dz)));
+        }
+      }
+    }
+    if (near) ++on_static;
+  }
+  return static_cast<double>(on_static) / static_cast<double>(points.size());
+}
+
+std::vector<MapObject> ObjectMapBuilder::dynamicObjects(const LabelledCloud& static_map,
+                                                        double voxel_size) const {
+  std::unordered_set<std::uint64_t> static_cells;
+  for (const Eigen::Vector3f& point : static_map.points) {
+    static_cells.insert(voxelKey(point, options_.cell_size));
+  }
   std::vector<MapObject> objects;
   for (const DynamicTrack& track : tracker_.tracks()) {
     if (static_cast<double>(track.points.size()) <
         options_.min_dynamic_share * static_cast<double>(track.keyframe_points)) {
       continue;
     }
-    // One keyframe's view shows neither that a person moved nor that they sat.
-    const bool moved = track.keyframes.size() >= 2 &&
-                       (track.travelled >= options_.min_travel || track.left_a_place);
+    // One keyframe's view shows neither that a person moved nor that they sat. A walker seen only
+    // where they passed to and fro moves their centroids little; a view of a place they left, or
+    // of a place empty before they stood there, says that they walked.
+    const bool walked = track.keyframes.size() >= 2 && (track.travelled >= options_.min_travel ||
+                                                        track.left_a_place || track.arrived);
     const bool sat_still = track.label == static_cast<std::uint8_t>(core::SemanticClass::kPerson) &&
                            static_cast<int>(track.keyframes.size()) >= options_.min_keyframes;
-    if (!moved && !sat_still) continue;
+    if (!walked && !sat_still) continue;
     MapObject object;
     object.points = voxelDownsample(track.points, voxel_size);
-    if (object.points.size() < options_.min_points) continue;
+    const double on_static = shareOnStatic(object.points, static_cells);
+    const bool moved = walked && on_static < options_.max_on_static_share;
+    spdlog::debug(
+        "dynamic objects: {} track of {} keyframes: travelled {:.2f} m, left a place {}, "
+        "arrived {}, on the static map {:.2f}: {}",
+        labelName(track.label), track.keyframes.size(), track.travelled, track.left_a_place,
+        track.arrived, on_static, moved ? "moving" : (sat_still ? "still" : "no object"));
+    if ((!moved && !sat_still) || object.points.size() < options_.min_points) continue;
     object.label = labelName(track.label);
     object.dynamic = moved;
     object.confidence = 1.0;  // a track keeps one label
@@ -132,7 +167,7 @@ std::vector<MapObject> ObjectMapBuilder::dynamicObjects(double voxel_size) const
 std::vector<MapObject> ObjectMapBuilder::objects(const LabelledCloud& static_map,
                                                  double voxel_size) const {
   std::vector<MapObject> objects = staticObjects(static_map);
-  std::vector<MapObject> dynamic = dynamicObjects(voxel_size);
+  std::vector<MapObject> dynamic = dynamicObjects(static_map, voxel_size);
   std::move(dynamic.begin(), dynamic.end(), std::back_inserter(objects));
   numberObjects(objects);
   return objects;

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <cstddef>
 #include <cstdint>
+#include <unordered_set>
 #include <vector>
 
 #include "segslam/core/camera.h"
@@ -35,6 +36,11 @@ struct ObjectMapOptions {
   // did not is a person who sat still (an object, not a moving one, when seen in min_keyframes
   // keyframes) or a mask that stayed on a static thing (no object: the static objects hold it).
   double min_travel = 0.5;
+  // A moving track with this share of its points or more within one cell (cell_size) of the
+  // static map's is a mask that slid over a static thing, not a moving object: a monitor a
+  // walker passed, its centroid moving with the mask's edge (walkers' tracks: at most 0.7, by the
+  // back wall).
+  double max_on_static_share = 0.9;
   DynamicTrackingOptions dynamic;
 };
 
@@ -62,7 +68,11 @@ class ObjectMapBuilder {
   [[nodiscard]] int keyframesSeeing(const Eigen::Vector3f& point) const;
   [[nodiscard]] std::vector<MapObject> staticObjects(const LabelledCloud& static_map) const;
   // The dynamic layer's tracks that are objects: the moving ones, and people who sat still.
-  [[nodiscard]] std::vector<MapObject> dynamicObjects(double voxel_size) const;
+  [[nodiscard]] std::vector<MapObject> dynamicObjects(const LabelledCloud& static_map,
+                                                      double voxel_size) const;
+  // The share of `points` within one cell (cell_size) of a cell of `static_cells`.
+  [[nodiscard]] double shareOnStatic(const LabelledCloud& points,
+                                     const std::unordered_set<std::uint64_t>& static_cells) const;
 
   core::Camera camera_;
   double max_depth_;
