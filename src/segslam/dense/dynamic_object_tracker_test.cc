@@ -147,6 +147,33 @@ TEST(DynamicObjectTracker, AWalkerWhoLeavesAndComesBackIsOneTrackBesideASeatedPe
   EXPECT_NEAR(tracks[1].travelled, 3.0f, 0.05f);
 }
 
+// A seated person and a walker passing 1 m in front of them, both out of view for 3 s; then a part
+// of the seated person where they sat (under min_reach_points: a still track's reach is slack). It
+// is nearer the seated person's place than the walker's by far: it continues the seated person,
+// though the walker's reach after 3 s is 13 times as long (by distance relative to each track's
+// own reach, the walker took it, and came back later as a second track).
+TEST(DynamicObjectTracker, APartOfASeatedPersonStaysTheirsAfterAnAbsence) {
+  DynamicObjectTracker tracker({});
+  for (int k = 0; k < 2; ++k) {
+    LabelledCloud cloud;
+    addPerson(cloud, -1.0f, 4.0f);
+    addPerson(cloud, k == 0 ? 0.4f : -0.6f, 3.0f);  // walking to the left
+    track(tracker, static_cast<std::uint64_t>(k), 0.5 * k, cloud);
+  }
+  LabelledCloud part;
+  addBox(part, {-0.9f, -1.2f, 3.95f}, {-0.8f, -1.0f, 4.0f}, SemanticClass::kPerson);
+  ASSERT_GT(part.size(), tracker.options().min_track_points);
+  ASSERT_LT(part.size(), tracker.options().min_reach_points);
+  track(tracker, 2, 3.5, part);
+  LabelledCloud walker;
+  addPerson(walker, 1.5f, 2.0f);
+  track(tracker, 3, 4.0, walker);
+  const auto& tracks = tracker.tracks();
+  ASSERT_EQ(tracks.size(), 2u);
+  EXPECT_EQ(tracks[0].keyframes, (std::vector<std::uint64_t>{0, 1, 2}));
+  EXPECT_EQ(tracks[1].keyframes, (std::vector<std::uint64_t>{0, 1, 3}));
+}
+
 // A person seen still and then out of view: a small person segment far away (a stray label, a
 // partial view of someone else) does not continue their track across the reach of the absence;
 // the person seen whole there does: they got up and walked.

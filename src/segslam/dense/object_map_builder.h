@@ -36,10 +36,9 @@ struct ObjectMapOptions {
   // did not is a person who sat still (an object, not a moving one, when seen in min_keyframes
   // keyframes) or a mask that stayed on a static thing (no object: the static objects hold it).
   double min_travel = 0.5;
-  // A moving track with this share of its points or more within one cell (cell_size) of the
-  // static map's is a mask that slid over a static thing, not a moving object: a monitor a
-  // walker passed, its centroid moving with the mask's edge (walkers' tracks: at most 0.7, by the
-  // back wall).
+  // A moving track of a label other than person with this share of its points or more within
+  // one cell (cell_size) of the static map's is a mask that slid over a static thing, not a
+  // moving object: a monitor a walker passed, its centroid moving with the mask's edge.
   double max_on_static_share = 0.9;
   DynamicTrackingOptions dynamic;
 };

@@ -198,5 +198,25 @@ TEST(ObjectMapBuilder, AMaskThatSlidesOverAStaticThingIsNoMovingObject) {
   }
 }
 
+// A far walker by the back wall, whom the masks of other keyframes missed: their points lie on the
+// static map, and they still walked.
+TEST(ObjectMapBuilder, AWalkerOnTheStaticMapIsStillAMovingObject) {
+  LabelledCloud map = desk();
+  ObjectMapBuilder builder(core::Camera(), 5.0, {});
+  for (int k = 0; k < 3; ++k) {
+    const float x = -0.8f + 0.5f * static_cast<float>(k);
+    LabelledCloud person;
+    addBox(person, {x, -1.0f, 3.0f}, {x + 0.4f, 0.7f, 3.3f}, SemanticClass::kPerson);
+    map.append(person);
+    builder.addKeyFrame(static_cast<std::uint64_t>(k), 0.5 * k, Eigen::Isometry3d::Identity(),
+                        desk(), person);
+  }
+  const auto objects = builder.objects(voxelDownsample(map, 0.01), 0.01);
+  const auto person = std::find_if(objects.begin(), objects.end(),
+                                   [](const MapObject& o) { return o.label == "person"; });
+  ASSERT_NE(person, objects.end());
+  EXPECT_TRUE(person->dynamic);
+}
+
 }  // namespace
 }  // namespace segslam::dense
