@@ -20,6 +20,17 @@ LabelledCloud desk() {
   return cloud;
 }
 
+// The desk with a wall 4.5 m ahead behind it, which shows a place empty.
+LabelledCloud deskBeforeAWall() {
+  LabelledCloud room = desk();
+  for (int i = -60; i <= 60; ++i) {
+    for (int j = -40; j <= 40; ++j) {
+      room.add({0.05f * static_cast<float>(i), 0.05f * static_cast<float>(j), 4.5f}, {9, 9, 9});
+    }
+  }
+  return room;
+}
+
 std::vector<MapObject> objectsOf(const std::vector<LabelledCloud>& keyframes) {
   ObjectMapBuilder builder(core::Camera(), 5.0, {});  // 640 x 480, f = 525 px
   LabelledCloud all;
@@ -117,12 +128,7 @@ TEST(ObjectMapBuilder, APersonWhoSatStillIsAnObjectButNotAMovingOne) {
 // A walker near the camera seen in parts, or pacing, moves their centroid less than min_travel;
 // the wall seen where they were says that they moved.
 TEST(ObjectMapBuilder, APersonSeenGoneFromWhereTheyWereIsAMovingObject) {
-  LabelledCloud room = desk();
-  for (int i = -60; i <= 60; ++i) {
-    for (int j = -40; j <= 40; ++j) {
-      room.add({0.05f * static_cast<float>(i), 0.05f * static_cast<float>(j), 4.5f}, {9, 9, 9});
-    }
-  }
+  const LabelledCloud room = deskBeforeAWall();
   ObjectMapBuilder builder(core::Camera(), 5.0, {});
   const float pacing[] = {1.0f, 1.4f, 1.0f};
   for (int k = 0; k < 3; ++k) {
@@ -143,12 +149,7 @@ TEST(ObjectMapBuilder, APersonSeenGoneFromWhereTheyWereIsAMovingObject) {
 // A walker seen twice close together (a far one seen in two keyframes, 0.2 m apart) where an
 // earlier keyframe saw the wall: they walked there, while a seated person is never seen gone.
 TEST(ObjectMapBuilder, APersonStandingWhereTheRoomWasSeenEmptyIsAMovingObject) {
-  LabelledCloud room = desk();
-  for (int i = -60; i <= 60; ++i) {
-    for (int j = -40; j <= 40; ++j) {
-      room.add({0.05f * static_cast<float>(i), 0.05f * static_cast<float>(j), 4.5f}, {9, 9, 9});
-    }
-  }
+  const LabelledCloud room = deskBeforeAWall();
   ObjectMapBuilder builder(core::Camera(), 5.0, {});
   builder.addKeyFrame(0, 0.0, Eigen::Isometry3d::Identity(), room, {});
   const float walked[] = {1.0f, 1.2f};
