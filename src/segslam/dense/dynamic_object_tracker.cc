@@ -23,9 +23,10 @@ bool placeLeftFor(const DynamicTrack& track, const PlaceSight& sight, std::size_
 
 }  // namespace
 
-std::vector<std::size_t> DynamicObjectTracker::link(
-    double timestamp, const std::vector<LabelSegment>& segments,
-    const std::vector<PlaceSight>& last_places) const {
+std::vector<std::size_t> DynamicObjectTracker::link(double timestamp,
+                                                    const std::vector<LabelSegment>& segments,
+                                                    const std::vector<PlaceSight>& last_places,
+                                                    const std::vector<bool>& stayed) const {
   const std::size_t none = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> track_of(segments.size(), none);
   // Candidate links, nearest relative to the walking reach first: (distance / reach, segment,
@@ -52,7 +53,10 @@ std::vector<std::size_t> DynamicObjectTracker::link(
       // reach only bounds it (relative to it, a part of a seated person 0.14 m from their place
       // went to a walker last seen 1.5 m away, who then came back as a second track).
       const double walking_reach = options_.max_speed * gap + options_.slack;
-      const double reach = still && !may_walk ? options_.slack : walking_reach;
+      // Nor does anyone walk to where something stood before: a chair beside a seated person,
+      // labelled a person in a few keyframes, took a walker's track 1.8 m across the room, and
+      // the walker came back as a second track.
+      const double reach = (still && !may_walk) || stayed[s] ? options_.slack : walking_reach;
       if (distance <= reach) candidates.emplace_back(distance / walking_reach, s, t);
     }
   }
@@ -126,7 +130,11 @@ void DynamicObjectTracker::addKeyFrame(std::uint64_t keyframe_id, double timesta
       track.left_a_place = true;
     }
   }
-  std::vector<std::size_t> track_of = link(timestamp, segments, last_places);
+  std::vector<bool> stayed(segments.size(), false);
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    stayed[s] = stoodThereBefore(segments[s].centroid);
+  }
+  std::vector<std::size_t> track_of = link(timestamp, segments, last_places, stayed);
   // The linked segments first: each places its track, and a segment that only joins a track by
   // touching its segment must not (a blob beside a seated person moved their track 0.9 m, and the
   // person, seen again where they sat, was then taken by a walker's track). Then the largest.
@@ -159,9 +167,10 @@ void DynamicObjectTracker::addKeyFrame(std::uint64_t keyframe_id, double timesta
     }
     extend(track_of[s], keyframe_id, timestamp, points, segment);
     spdlog::debug(
-        "dynamic objects: keyframe {} segment of {} points at ({:.2f}, {:.2f}, {:.2f}) -> track {}",
+        "dynamic objects: keyframe {} segment of {} points at ({:.2f}, {:.2f}, {:.2f}){} -> track "
+        "{}",
         keyframe_id, segment.indices.size(), segment.centroid.x(), segment.centroid.y(),
-        segment.centroid.z(), track_of[s]);
+        segment.centroid.z(), stayed[s] ? ", where something stood before," : "", track_of[s]);
   }
   earlier_views_.push_back(std::move(view));
 }
@@ -170,6 +179,16 @@ bool DynamicObjectTracker::seenEmptyBefore(const Eigen::Vector3f& place) const {
   return std::any_of(earlier_views_.begin(), earlier_views_.end(), [&](const auto& view) {
     return view.look(place).kind == PlaceSight::Kind::kEmpty;
   });
+}
+
+bool DynamicObjectTracker::stoodThereBefore(const Eigen::Vector3f& place) const {
+  bool static_there = false;
+  for (const KeyFrameDepthView& view : earlier_views_) {
+    const PlaceSight::Kind kind = view.look(place).kind;
+    if (kind == PlaceSight::Kind::kEmpty) return false;
+    static_there = static_there || kind == PlaceSight::Kind::kStatic;
+  }
+  return static_there;
 }
 
 }  // namespace segslam::dense

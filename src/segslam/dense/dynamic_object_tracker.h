@@ -82,10 +82,11 @@ class DynamicObjectTracker {
 
  private:
   // Index of the track each untracked segment continues, one segment per track (none:
-  // max size_t).
+  // max size_t). `stayed` marks segments where something stood before (stoodThereBefore).
   [[nodiscard]] std::vector<std::size_t> link(double timestamp,
                                               const std::vector<LabelSegment>& segments,
-                                              const std::vector<PlaceSight>& last_places) const;
+                                              const std::vector<PlaceSight>& last_places,
+                                              const std::vector<bool>& stayed) const;
   // The track of a segment of this keyframe (`track_of`, tracks_.size() and beyond = none yet)
   // whose bounds come within slack of `segment`'s, unless `segment` is of min_reach_points and
   // `view` shows the room between the two; tracks_.size() when none does.
@@ -97,6 +98,10 @@ class DynamicObjectTracker {
 
   // Whether a keyframe before this one showed `place` empty.
   [[nodiscard]] bool seenEmptyBefore(const Eigen::Vector3f& place) const;
+  // Whether keyframes before this one showed a static surface at `place` and none showed it
+  // empty: a static thing the mask now takes for a person, or someone there all along whom the
+  // masks missed; not someone who walked there.
+  [[nodiscard]] bool stoodThereBefore(const Eigen::Vector3f& place) const;
 
   DynamicTrackingOptions options_;
   std::vector<DynamicTrack> tracks_;

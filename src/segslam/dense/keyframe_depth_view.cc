@@ -72,9 +72,10 @@ PlaceSight KeyFrameDepthView::look(const Eigen::Vector3f& place_w) const {
   // Static points at the place may be the person themselves, missed by the mask: only a surface
   // behind it shows it empty.
   if (nearest->owner == kStatic) {
-    return nearest->depth > depth + static_cast<float>(options_.behind_margin)
-               ? PlaceSight{PlaceSight::Kind::kEmpty}
-               : PlaceSight{};
+    const auto behind_margin = static_cast<float>(options_.behind_margin);
+    if (nearest->depth > depth + behind_margin) return {PlaceSight::Kind::kEmpty};
+    return nearest->depth >= depth - behind_margin ? PlaceSight{PlaceSight::Kind::kStatic}
+                                                   : PlaceSight{};
   }
   return {PlaceSight::Kind::kSegment, static_cast<std::size_t>(nearest->owner), in_front};
 }

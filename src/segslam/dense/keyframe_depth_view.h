@@ -23,10 +23,11 @@ struct KeyFrameDepthViewOptions {
 };
 
 // What a keyframe showed at a place: nothing it can tell (out of view, no depth there, something
-// static in front of or at the place), a static surface well behind it (the place is empty:
-// whoever was there has left), or a segment of its dynamic layer at, before or behind it.
+// static in front of it), a static surface well behind it (the place is empty: whoever was there
+// has left), a static surface at it (a static thing there, or a person there whom the mask
+// missed), or a segment of its dynamic layer at, before or behind it.
 struct PlaceSight {
-  enum class Kind { kUnseen, kEmpty, kSegment };
+  enum class Kind { kUnseen, kEmpty, kStatic, kSegment };
   Kind kind = Kind::kUnseen;
   std::size_t segment = std::numeric_limits<std::size_t>::max();  // for kSegment
   bool in_front = false;  // for kSegment: the segment stands before the place, hiding it

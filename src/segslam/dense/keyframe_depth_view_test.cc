@@ -72,10 +72,18 @@ TEST(KeyFrameDepthView, WhatItCannotTellIsUnseen) {
   Scene pillar;
   addBox(pillar.static_points, {0.0f, -2.0f, 1.0f}, {0.4f, 1.0f, 1.1f}, SemanticClass::kNone);
   EXPECT_EQ(pillar.view().look(kPlace).kind, PlaceSight::Kind::kUnseen);
-  // The person still there but missed by the mask: their points are in the static layer.
+}
+
+TEST(KeyFrameDepthView, AStaticSurfaceAtThePlaceIsStatic) {
+  // The person there but missed by the mask: the surface the camera sees of them is in the static
+  // layer.
   Scene missed;
-  addPersonAt(missed.static_points, 0.0f, 2.0f);
-  EXPECT_EQ(missed.view().look(kPlace).kind, PlaceSight::Kind::kUnseen);
+  addBox(missed.static_points, {0.0f, -1.3f, 2.1f}, {0.4f, 0.3f, 2.15f}, SemanticClass::kNone);
+  EXPECT_EQ(missed.view().look(kPlace).kind, PlaceSight::Kind::kStatic);
+  // A cabinet there.
+  Scene cabinet;
+  addBox(cabinet.static_points, {0.0f, -1.0f, 2.1f}, {0.4f, 0.0f, 2.5f}, SemanticClass::kNone);
+  EXPECT_EQ(cabinet.view().look(kPlace).kind, PlaceSight::Kind::kStatic);
 }
 
 TEST(KeyFrameDepthView, PlacesAreLookedAtFromTheKeyFramesPose) {
