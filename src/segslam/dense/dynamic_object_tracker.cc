@@ -182,13 +182,14 @@ bool DynamicObjectTracker::seenEmptyBefore(const Eigen::Vector3f& place) const {
 }
 
 bool DynamicObjectTracker::stoodThereBefore(const Eigen::Vector3f& place) const {
-  bool static_there = false;
+  int static_views = 0;
+  int empty_views = 0;
   for (const KeyFrameDepthView& view : earlier_views_) {
     const PlaceSight::Kind kind = view.look(place).kind;
-    if (kind == PlaceSight::Kind::kEmpty) return false;
-    static_there = static_there || kind == PlaceSight::Kind::kStatic;
+    static_views += kind == PlaceSight::Kind::kStatic ? 1 : 0;
+    empty_views += kind == PlaceSight::Kind::kEmpty ? 1 : 0;
   }
-  return static_there;
+  return static_views > empty_views;
 }
 
 }  // namespace segslam::dense

@@ -98,9 +98,10 @@ class DynamicObjectTracker {
 
   // Whether a keyframe before this one showed `place` empty.
   [[nodiscard]] bool seenEmptyBefore(const Eigen::Vector3f& place) const;
-  // Whether keyframes before this one showed a static surface at `place` and none showed it
+  // Whether more keyframes before this one showed a static surface at `place` than showed it
   // empty: a static thing the mask now takes for a person, or someone there all along whom the
-  // masks missed; not someone who walked there.
+  // masks missed; not someone who walked there. One view of the wall behind a chair (its depth
+  // missing at the chair's edge) must not make the chair a place someone walked to.
   [[nodiscard]] bool stoodThereBefore(const Eigen::Vector3f& place) const;
 
   DynamicTrackingOptions options_;

@@ -276,9 +276,10 @@ TEST(DynamicObjectTracker, ABlobJoiningASeatedPersonDoesNotMoveTheirTrack) {
 }
 
 // Walker 30 Hz: a walker out of view for 3 s; meanwhile the mask takes part of a chair 4 m away
-// for a person. Within the walker's reach, but the keyframes before saw the chair there and never
-// the room behind it: nobody walked there. It starts a track of its own, and the walker, back,
-// continues theirs (taken by the chair, the walker came back as a second track).
+// for a person. Within the walker's reach, but the keyframes before saw the chair there, and only
+// one of them (its depth missing the chair) the room behind it: nobody walked there. It starts a
+// track of its own, and the walker, back, continues theirs (taken by the chair, the walker came
+// back as a second track).
 TEST(DynamicObjectTracker, NoWalkerContinuesWhereAStaticThingStoodBefore) {
   DynamicObjectTracker tracker({});
   LabelledCloud room = backdrop();
@@ -286,7 +287,7 @@ TEST(DynamicObjectTracker, NoWalkerContinuesWhereAStaticThingStoodBefore) {
   for (int k = 0; k < 4; ++k) {
     LabelledCloud cloud;
     addPerson(cloud, 0.5f * static_cast<float>(k), 2.0f);
-    track(tracker, static_cast<std::uint64_t>(k), 0.5 * k, cloud, room);
+    track(tracker, static_cast<std::uint64_t>(k), 0.5 * k, cloud, k == 0 ? backdrop() : room);
   }
   const LabelledCloud chair_as_person =
       test_clouds::box({-2.0f, -0.8f, 4.0f}, {-1.9f, -0.7f, 4.1f}, SemanticClass::kPerson);
