@@ -302,5 +302,27 @@ TEST(DynamicObjectTracker, NoWalkerContinuesWhereAStaticThingStoodBefore) {
   EXPECT_EQ(tracks[1].keyframes, (std::vector<std::uint64_t>{4}));
 }
 
+// s11 at 30 Hz: a walker seen in parts (under min_reach_points) comes within 0.4 m of where a
+// "person" segment was seen 7 s before. 0.12 m from their own place of 0.37 s before, they keep
+// their track (relative to each track's walking reach, the old one was nearer, and the walker
+// came back as a second track).
+TEST(DynamicObjectTracker, AWalkerSeenAMomentAgoNearbyKeepsTheirTrack) {
+  DynamicObjectTracker tracker({});
+  const auto part_at = [](float x) {
+    return test_clouds::box({x - 0.075f, -0.925f, 2.125f}, {x + 0.075f, -0.775f, 2.175f},
+                            SemanticClass::kPerson);
+  };
+  track(tracker, 0, 0.0,
+        test_clouds::box({-0.05f, -0.9f, 2.1f}, {0.05f, -0.8f, 2.2f}, SemanticClass::kPerson));
+  ASSERT_LT(part_at(0.0f).size(), tracker.options().min_reach_points);
+  track(tracker, 1, 6.5, part_at(1.0f));
+  track(tracker, 2, 7.0, part_at(0.52f));
+  track(tracker, 3, 7.37, part_at(0.4f));
+  const auto& tracks = tracker.tracks();
+  ASSERT_EQ(tracks.size(), 2u);
+  EXPECT_EQ(tracks[0].keyframes, (std::vector<std::uint64_t>{0}));
+  EXPECT_EQ(tracks[1].keyframes, (std::vector<std::uint64_t>{1, 2, 3}));
+}
+
 }  // namespace
 }  // namespace segslam::dense
