@@ -51,7 +51,6 @@ std::vector<std::size_t> DynamicObjectTracker::link(double timestamp,
       const bool still = track.travelled <= options_.slack && !track.came_back;
       const bool may_walk = segments[s].indices.size() >= options_.min_reach_points &&
                             placeLeftFor(track, last_places[t], s);
-      // A still track's short reach only bounds its links.
       const double walking_reach = options_.max_speed * gap + options_.slack;
       // Nor does anyone walk to where something stood before: a chair beside a seated person,
       // labelled a person in a few keyframes, took a walker's track 1.8 m across the room, and
