@@ -16,6 +16,7 @@
 #include "segslam/eval/evaluation_report.h"
 #include "segslam/io/damaged_frames.h"
 #include "segslam/io/trajectory_io.h"
+#include "segslam/system/frame_log.h"
 #include "segslam/system/frame_player.h"
 #include "segslam/system/map_session_layers.h"
 #include "segslam/util/elapsed_time.h"
@@ -45,30 +46,6 @@ long peakRssMegabytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024;
-}
-
-const char* stateName(tracking::TrackingState state) {
-  switch (state) {
-    case tracking::TrackingState::kOk:
-      return "ok";
-    case tracking::TrackingState::kLost:
-      return "lost";
-    case tracking::TrackingState::kNotInitialised:
-      break;
-  }
-  return "not_initialised";
-}
-
-void writeFrameLog(const std::filesystem::path& file, const std::vector<FrameStats>& stats) {
-  auto out = fmt::output_file(file.string());
-  out.print(
-      "frame,timestamp,mask_ms,extraction_ms,tracking_ms,keypoints,matches,state,keyframe,"
-      "live_keyframes,live_map_points\n");
-  for (const auto& s : stats) {
-    out.print("{},{:.6f},{:.3f},{:.3f},{:.3f},{},{},{},{},{},{}\n", s.frame_id, s.timestamp,
-              s.mask_ms, s.extraction_ms, s.tracking_ms, s.keypoints, s.matches, stateName(s.state),
-              s.keyframe ? 1 : 0, s.live_keyframes, s.live_map_points);
-  }
 }
 
 nlohmann::json timingJson(const TimingSummary& t) {
@@ -244,7 +221,7 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
   SequenceRunSummary summary;
   summary.frames = std::min(options.max_frames, dataset.size());
   summary.absent_images = dataset.absentImages().size();
-  std::vector<FrameStats> stats;
+  FrameLog frame_log(out_dir / "frame_log.csv");
   std::vector<double> realtime_lag_ms;
   {
     auto mask_options = options.masks;
@@ -269,10 +246,12 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
         continue;
       }
       if (options.realtime) realtime_lag_ms.push_back(played.lag_ms);
-      stats.push_back(pipeline.track(played.frame, played.masks, played.frame_id, played.mask_ms));
-      if (on_frame) on_frame(stats.back());
+      const FrameStats stats =
+          pipeline.track(played.frame, played.masks, played.frame_id, played.mask_ms);
+      frame_log.add(stats);
+      if (on_frame) on_frame(stats);
       if (summary.map_file) {
-        checkLocalised(options.map_file, i, summary.frames, stats.back(), *summary.map_file);
+        checkLocalised(options.map_file, i, summary.frames, stats, *summary.map_file);
       }
     }
     summary.skipped_frames = damaged.count();
@@ -316,21 +295,15 @@ SequenceRunSummary runSequence(const io::TumDataset& dataset, const SequenceRunO
     checkLoops(dataset, summary);
     evaluate(dataset, options, out_dir, trajectory, tracked, summary);
   }
-  std::vector<double> tracking_ms;
-  std::vector<double> extraction_ms;
-  for (const auto& s : stats) {
-    tracking_ms.push_back(s.tracking_ms);
-    extraction_ms.push_back(s.extraction_ms);
-    if (s.state == tracking::TrackingState::kLost) ++summary.lost_frames;
-  }
-  summary.tracking = summarise(tracking_ms);
-  summary.extraction = summarise(extraction_ms);
+  summary.lost_frames = frame_log.lostFrames();
+  summary.tracking = summarise(frame_log.trackingMs());
+  summary.extraction = summarise(frame_log.extractionMs());
   summary.realtime = options.realtime;
   summary.realtime_lag = summarise(realtime_lag_ms);
   summary.frames_per_second = summary.frames / std::max(summary.wall_seconds, 1e-9);
   summary.tracking_frames_per_second = summary.frames / std::max(summary.tracking_seconds, 1e-9);
   summary.peak_rss_mb = peakRssMegabytes();
-  writeFrameLog(out_dir / "frame_log.csv", stats);
+  frame_log.close();
   summary.outputs.push_back(out_dir / "frame_log.csv");
   writeSummaryJson(out_dir / "summary.json", summary);
   summary.outputs.push_back(out_dir / "summary.json");

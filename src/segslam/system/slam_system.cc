@@ -12,7 +12,7 @@ namespace {
 
 geometry::Pose resolvedPose(const tracking::Tracker::FramePoseRecord& record) {
   // A culled reference keyframe is replaced by its parent, composing the frozen relative pose.
-  geometry::Pose T_c_reference = record.T_c_reference;
+  geometry::Pose T_c_reference = record.T_c_reference();
   const map::KeyFrame* reference = record.reference;
   while (reference->bad && reference->parent != nullptr) {
     T_c_reference = T_c_reference * reference->T_c_parent;

@@ -127,7 +127,7 @@ bool Tracker::movedPlausibly() const {
   // may have moved it since); none before the first or in a restored map not yet localised in.
   if (records_.empty() || records_.back().reference->bad) return true;
   const FramePoseRecord& last = records_.back();
-  const geometry::Pose last_T_cw = last.T_c_reference * last.reference->T_cw;
+  const geometry::Pose last_T_cw = last.T_c_reference() * last.reference->T_cw;
   if (withinMotionLimit(last_T_cw, last.timestamp, current_.T_cw, current_.timestamp,
                         options_.motion_limit)) {
     return true;
@@ -541,7 +541,7 @@ void Tracker::reanchorLastFrame() {
   if (!last_.has_pose || records_.empty()) return;
   const FramePoseRecord& record = records_.back();
   if (record.reference != last_.reference_keyframe.get() || record.reference->bad) return;
-  last_.T_cw = record.T_c_reference * record.reference->T_cw;
+  last_.T_cw = record.T_c_reference() * record.reference->T_cw;
 }
 
 void Tracker::recordPose() {
@@ -550,8 +550,21 @@ void Tracker::recordPose() {
   // (updateLocalKeyFrames): it is placed relative to the tracker's reference.
   if (!current_.reference_keyframe) current_.reference_keyframe = reference_keyframe_;
   const auto& reference = current_.reference_keyframe;
-  records_.push_back(
-      {current_.timestamp, reference.get(), current_.T_cw * reference->T_cw.inverse()});
+  records_.emplace_back(current_.timestamp, reference.get(),
+                        current_.T_cw * reference->T_cw.inverse());
+}
+
+Tracker::FramePoseRecord::FramePoseRecord(double timestamp, map::KeyFrame* reference,
+                                          const geometry::Pose& T_c_reference)
+    : timestamp(timestamp),
+      reference(reference),
+      rotation_(T_c_reference.linear()),
+      translation_(T_c_reference.translation()) {}
+
+static_assert(sizeof(Tracker::FramePoseRecord) == 72);
+
+geometry::Pose Tracker::FramePoseRecord::T_c_reference() const {
+  return geometry::poseFromTranslationQuaternion(translation_, rotation_);
 }
 
 }  // namespace segslam::tracking

@@ -141,5 +141,14 @@ TEST_F(TrackerOnARoomLap, AFrameTriedAgainSearchesTheWholeLocalMapAgain) {
   EXPECT_EQ(tracker.localMapPoints(), local_points);
 }
 
+TEST(FramePoseRecord, GivesBackThePoseItWasMadeWith) {
+  geometry::Pose T_c_reference = geometry::Pose::Identity();
+  T_c_reference.linear() =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.2, -1.0, 0.4).normalized()).toRotationMatrix();
+  T_c_reference.translation() = Eigen::Vector3d(1.25, -0.5, 3.0);
+  const Tracker::FramePoseRecord record(2.0, nullptr, T_c_reference);
+  EXPECT_TRUE(record.T_c_reference().isApprox(T_c_reference, 1e-12));
+}
+
 }  // namespace
 }  // namespace segslam::tracking
