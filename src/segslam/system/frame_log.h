@@ -12,7 +12,7 @@ namespace segslam::system {
 
 // A run's frame_log.csv (per-frame timings and state), a row written as each frame is tracked.
 // What the run's summary needs of a frame stays in memory (16 bytes), not the frame's figures
-// and pose (200 bytes): a session at 30 Hz holds 20 MB less an hour.
+// and pose (224 bytes): a session at 30 Hz holds 22 MB less an hour.
 class FrameLog {
  public:
   // Opens `file` and writes the header; throws util::Error naming the file when it cannot.
