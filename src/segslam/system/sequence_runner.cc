@@ -1,7 +1,6 @@
 #include "segslam/system/sequence_runner.h"
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 #include <spdlog/spdlog.h>
 #include <sys/resource.h>
 
