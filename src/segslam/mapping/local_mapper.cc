@@ -6,6 +6,7 @@
 #include <chrono>
 #include <set>
 
+#include "segslam/mapping/local_window.h"
 #include "segslam/mapping/point_fusion.h"
 #include "segslam/optim/bundle_adjuster.h"
 
@@ -17,80 +18,6 @@ constexpr int kMinObservationsOfRecentPoint = 3;  // RGB-D: a point must be seen
 // A new point is judged (kept or culled) until this many keyframes after the one that made it.
 constexpr std::uint64_t kRecentPointKeyFrames = 3;
 constexpr double kMinFoundRatio = 0.25;
-
-// Keyframes and points of one local bundle adjustment, with the indices the solver uses.
-struct LocalWindow {
-  std::vector<map::KeyFrame*> keyframes;  // optimised first, then fixed
-  std::vector<std::shared_ptr<map::MapPoint>> points;
-  optim::BundleAdjustmentProblem problem;
-  std::vector<std::pair<map::KeyFrame*, map::MapPoint*>> observation_owners;
-};
-
-LocalWindow collectLocalWindow(map::KeyFrame& keyframe, std::size_t max_keyframes) {
-  LocalWindow window;
-  const std::uint64_t tag = keyframe.id;
-  keyframe.ba_local_keyframe = tag;
-  std::vector<map::KeyFrame*> local = {&keyframe};
-  for (map::KeyFrame* neighbour : keyframe.covisiblesWithWeight(0)) {
-    if (local.size() >= max_keyframes) break;
-    if (neighbour->bad) continue;
-    neighbour->ba_local_keyframe = tag;
-    local.push_back(neighbour);
-  }
-  std::set<std::uint64_t> seen_points;
-  for (map::KeyFrame* k : local) {
-    for (const auto& [index, point] : k->validMapPoints()) {
-      if (seen_points.insert(point->id).second) window.points.push_back(point);
-    }
-  }
-  std::vector<map::KeyFrame*> fixed;
-  for (const auto& point : window.points) {
-    for (const auto& [observer, index] : point->observations()) {
-      if (observer->bad || observer->ba_local_keyframe == tag ||
-          observer->ba_fixed_keyframe == tag) {
-        continue;
-      }
-      observer->ba_fixed_keyframe = tag;
-      fixed.push_back(observer);
-    }
-  }
-  window.keyframes = local;
-  window.keyframes.insert(window.keyframes.end(), fixed.begin(), fixed.end());
-  return window;
-}
-
-void buildProblem(LocalWindow& window) {
-  auto& problem = window.problem;
-  problem.intrinsics = window.keyframes.front()->camera->stereo;
-  std::map<const map::KeyFrame*, std::size_t> keyframe_index;
-  for (std::size_t k = 0; k < window.keyframes.size(); ++k) {
-    map::KeyFrame* keyframe = window.keyframes[k];
-    const bool fixed =
-        keyframe->id == 0 || keyframe->ba_local_keyframe != window.keyframes.front()->id;
-    problem.keyframes.push_back({keyframe->id, keyframe->T_cw, fixed});
-    keyframe_index[keyframe] = k;
-  }
-  // A window that no keyframe outside it sees into would be free to drift as a whole: its oldest
-  // keyframe holds it in place.
-  const bool anchored = std::any_of(problem.keyframes.begin(), problem.keyframes.end(),
-                                    [](const optim::BaKeyFrame& k) { return k.fixed; });
-  if (!anchored && problem.keyframes.size() > 1) {
-    std::min_element(
-        problem.keyframes.begin() + 1, problem.keyframes.end(),
-        [](const optim::BaKeyFrame& a, const optim::BaKeyFrame& b) { return a.id < b.id; })
-        ->fixed = true;
-  }
-  for (std::size_t p = 0; p < window.points.size(); ++p) {
-    const auto& point = window.points[p];
-    problem.points.push_back({point->id, point->position});
-    for (const auto& [observer, index] : point->observations()) {
-      const auto it = keyframe_index.find(observer);
-      if (it == keyframe_index.end()) continue;
-      problem.observations.push_back({it->second, p, observer->observation(index)});
-      window.observation_owners.emplace_back(observer, point.get());
-    }
-  }
-}
 
 }  // namespace
 
@@ -328,7 +255,6 @@ void LocalMapper::localBundleAdjustment(map::KeyFrame& keyframe) {
     std::lock_guard lock(map_.mutex);
     if (keyframe.bad) return;
     window = collectLocalWindow(keyframe, static_cast<std::size_t>(options_.ba_max_keyframes));
-    buildProblem(window);
   }
   const auto start = std::chrono::steady_clock::now();
   optim::BundleAdjustmentOptions ba_options;
