@@ -136,12 +136,17 @@ std::vector<MapObject> ObjectMapBuilder::dynamicObjects(const LabelledCloud& sta
         options_.min_dynamic_share * static_cast<double>(track.keyframe_points)) {
       continue;
     }
-    // One keyframe's view shows neither that a person moved nor that they sat. A walker seen only
-    // where they passed to and fro moves their centroids little; a view of a place they left, or
-    // of a place empty before they stood there, says that they walked.
-    const bool walked = track.keyframes.size() >= 2 && (track.travelled >= options_.min_travel ||
-                                                        track.left_a_place || track.arrived);
+    // A walker seen only where they passed to and fro moves their centroids little; a view of a
+    // place they left, or of a place empty before they stood there, says that they walked. For a
+    // person seen whole (min_reach_points) that holds even when one keyframe saw them: the second
+    // of two people pacing one line is in view alone only where the first could have walked, and
+    // is tracked apart only in the view that shows both. Other single views show neither that
+    // something moved nor that it sat.
     const bool is_person = track.label == static_cast<std::uint8_t>(core::SemanticClass::kPerson);
+    const bool walked = (track.keyframes.size() >= 2 && (track.travelled >= options_.min_travel ||
+                                                         track.left_a_place || track.arrived)) ||
+                        (is_person && (track.arrived || track.left_a_place) &&
+                         track.points.size() >= options_.dynamic.min_reach_points);
     const bool sat_still =
         is_person && static_cast<int>(track.keyframes.size()) >= options_.min_keyframes;
     if (!walked && !sat_still) continue;
